@@ -1,0 +1,93 @@
+/* hslam: addressing of the tiled occupancy grid (thesis 4.6.1 i-ii).
+ *
+ * Cells are squares of `resolution_m` whose CENTRES lie on integer multiples
+ * of the resolution, as in thesis eq. 81-82 (x_cell = 100 + ceil((x_r - 50)/100)
+ * in mm for 0.1 m cells): global cell g covers [(g - 1/2) res, (g + 1/2) res).
+ * Tiles hold N x N cells; tile (0,0) is the home tile, with the robot's start
+ * (the world origin) at the centre of its local cell (N/2, N/2) = (100, 100).
+ *
+ * The thesis' formulas are written for a single 20 m tile (eq. 81-83) and its
+ * tile version eq. 84 ("x_r = 200 T_x x 100 x_cell mm") is garbled; the general
+ * form used here is
+ *     g = floor(x / res + 1/2)                      (eq. 81-82, any resolution)
+ *     T = floor((g + N/2) / N),  l = g + N/2 - T N  (tile, local cell 0..N-1)
+ *     x = (T N + l - N/2) res                       (eq. 83-84, cell centre)
+ * which uses floor division so negative coordinates resolve to the tile on
+ * their side of the border (C++ '/' truncates towards zero and would not). */
+#pragma once
+
+#include <mrpt/math/TPoint2D.h>
+
+#include <cstddef>
+#include <functional>
+
+namespace hslam::maps
+{
+/** Integer tile coordinates relative to the home tile (0,0). */
+struct TTileIndex
+{
+	int ix = 0, iy = 0;
+	bool operator==(const TTileIndex& o) const { return ix == o.ix && iy == o.iy; }
+	bool operator!=(const TTileIndex& o) const { return !(*this == o); }
+};
+
+struct TTileIndexHash
+{
+	size_t operator()(const TTileIndex& t) const
+	{
+		return std::hash<long long>()((static_cast<long long>(t.ix) << 32) ^ static_cast<unsigned>(t.iy));
+	}
+};
+
+/** Cell index in the whole (unbounded) grid; cell (0,0) is centred on the origin. */
+struct TGlobalCell
+{
+	int gx = 0, gy = 0;
+	bool operator==(const TGlobalCell& o) const { return gx == o.gx && gy == o.gy; }
+};
+
+/** Cell index inside one tile, 0 .. N-1 on each axis. */
+struct TLocalCell
+{
+	int lx = 0, ly = 0;
+	bool operator==(const TLocalCell& o) const { return lx == o.lx && ly == o.ly; }
+};
+
+/** Inclusive range of global cells. */
+struct TCellBounds
+{
+	int gxMin = 0, gxMax = -1, gyMin = 0, gyMax = -1;
+	bool empty() const { return gxMax < gxMin || gyMax < gyMin; }
+	int width() const { return empty() ? 0 : gxMax - gxMin + 1; }
+	int height() const { return empty() ? 0 : gyMax - gyMin + 1; }
+};
+
+class CTiledGridGeometry
+{
+   public:
+	CTiledGridGeometry(double resolution_m, int tileSizeCells);
+
+	double resolution_m() const { return m_resolution_m; }
+	int tileSizeCells() const { return m_tileSizeCells; }
+	double tileSize_m() const { return m_resolution_m * m_tileSizeCells; }
+
+	TGlobalCell cellOf(double x_m, double y_m) const;
+	mrpt::math::TPoint2D cellCentre(const TGlobalCell& c) const;
+
+	TTileIndex tileOf(const TGlobalCell& c) const;
+	TLocalCell localCellOf(const TGlobalCell& c) const;
+	TGlobalCell globalCellOf(const TTileIndex& t, const TLocalCell& l) const;
+
+	/** Global cells covered by one tile. */
+	TCellBounds tileBounds(const TTileIndex& t) const;
+
+   private:
+	double m_resolution_m;
+	int m_tileSizeCells;
+	int m_half;  //!< N/2: local index of the cell centred on the tile centre
+};
+
+/** floor(a / b) for b > 0, correct for negative a. */
+inline int floorDiv(int a, int b) { return (a >= 0) ? a / b : -((-a + b - 1) / b); }
+
+}  // namespace hslam::maps

@@ -1,0 +1,107 @@
+/* hslam: scalable tiled occupancy grid (thesis 4.6.1).
+ *
+ * The map is a set of N x N tiles created on demand when sensing first reaches
+ * them (memory grows with the explored area only), indexed by integer tile
+ * coordinates relative to the home tile (0,0); see CTiledGridGeometry for the
+ * addressing. Each cell keeps the log-odds of being occupied, so the thesis'
+ * Bayes rule (eq. 85) is one addition per update,
+ *     l <- l + log(p / (1 - p)),
+ * clamped to +-log(Max_occupied / (1 - Max_occupied)) (Max_occupied = 0.98,
+ * thesis 4.6.2 iii), which keeps every cell able to change its mind. A cell
+ * never updated is "unknown" (distinct from an observed cell at 0.5). */
+#pragma once
+
+#include <hslam/maps/CTiledGridGeometry.h>
+
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+namespace hslam::maps
+{
+/** Storage of one tile: log-odds of occupancy and an observed flag per cell. */
+class CTile
+{
+   public:
+	explicit CTile(int sizeCells);
+	float& logOdds(const TLocalCell& c) { return m_logOdds[index(c)]; }
+	float logOdds(const TLocalCell& c) const { return m_logOdds[index(c)]; }
+	bool observed(const TLocalCell& c) const { return m_observed[index(c)] != 0; }
+	void markObserved(const TLocalCell& c) { m_observed[index(c)] = 1; }
+	size_t observedCount() const;
+	size_t memoryBytes() const { return m_logOdds.size() * (sizeof(float) + sizeof(uint8_t)); }
+
+   private:
+	size_t index(const TLocalCell& c) const { return static_cast<size_t>(c.ly) * m_size + c.lx; }
+	int m_size;
+	std::vector<float> m_logOdds;
+	std::vector<uint8_t> m_observed;
+};
+
+class CTiledOccupancyGrid
+{
+   public:
+	struct TOptions
+	{
+		double resolution_m = 0.1;  //!< cell side (m); thesis 4.6.1: 0.1 m
+		int tile_size_cells = 200;  //!< N, cells per tile side; thesis: 200 (20 m tiles)
+		double max_occupied_probability = 0.98;  //!< clamp, thesis Max_occupied (4.6.2 iii);
+												 //!< free side clamped symmetrically at 1 - this
+
+		template <class V>
+		void visit(V& v)
+		{
+			v.real("resolution_m", resolution_m, 0.01, 2.0);
+			v.integer("tile_size_cells", tile_size_cells, 10, 4000);
+			v.real("max_occupied_probability", max_occupied_probability, 0.51, 0.9999);
+		}
+	};
+
+	CTiledOccupancyGrid() : CTiledOccupancyGrid(TOptions()) {}
+	explicit CTiledOccupancyGrid(const TOptions& options);
+
+	const TOptions& options() const { return m_options; }
+	const CTiledGridGeometry& geometry() const { return m_geometry; }
+
+	/** Bayes update of one cell with the sensor probability of occupancy p
+	 * given as log-odds (thesis eq. 85); creates the tile if needed. */
+	void updateCell(const TGlobalCell& c, float logOddsDelta);
+
+	/** Log-odds of occupancy (0 for never-observed cells). */
+	float logOdds(const TGlobalCell& c) const;
+	/** Probability of occupancy (0.5 for never-observed cells). */
+	double occupancyProbability(const TGlobalCell& c) const;
+	bool isObserved(const TGlobalCell& c) const;
+
+	size_t tileCount() const { return m_tiles.size(); }
+	/** Tiles in creation order (thesis fig. 130: T1 is the home tile...). */
+	const std::vector<TTileIndex>& tilesInCreationOrder() const { return m_creationOrder; }
+	const CTile* findTile(const TTileIndex& t) const;
+	/** Union of the bounds of all existing tiles (empty if none). */
+	TCellBounds tileExtent() const;
+	/** Bounds of the observed cells only (empty if none). */
+	TCellBounds observedBounds() const;
+	size_t memoryBytes() const;
+	void clear();
+
+	float clampLogOdds() const { return m_clampLogOdds; }
+
+   private:
+	CTile& tileFor(const TTileIndex& t);
+
+	TOptions m_options;
+	CTiledGridGeometry m_geometry;
+	float m_clampLogOdds;
+	std::unordered_map<TTileIndex, std::unique_ptr<CTile>, TTileIndexHash> m_tiles;
+	std::vector<TTileIndex> m_creationOrder;
+	// Last tile touched: consecutive cells of a ray are almost always in it.
+	TTileIndex m_cachedIndex;
+	CTile* m_cachedTile = nullptr;
+};
+
+/** log(p / (1 - p)) */
+float probabilityToLogOdds(double p);
+/** 1 / (1 + exp(-l)) */
+double logOddsToProbability(double logOdds);
+
+}  // namespace hslam::maps

@@ -1,0 +1,66 @@
+#include <hslam/maps/CLaserGridInserter.h>
+#include <hslam/maps/grid_ray_tracing.h>
+
+#include <cmath>
+
+namespace hslam::maps
+{
+CLaserGridInserter::CLaserGridInserter(const TOptions& options)
+	: m_options(options),
+	  m_freeLogOdds(probabilityToLogOdds(options.free_probability)),
+	  m_occupiedLogOdds(probabilityToLogOdds(options.occupied_probability))
+{
+}
+
+TLaserInsertStats CLaserGridInserter::insert(CTiledOccupancyGrid& grid, const mrpt::poses::CPose2D& robotPose,
+											 const mrpt::obs::CObservation2DRangeScan& scan,
+											 const std::vector<bool>* hitIsExcluded)
+{
+	TLaserInsertStats stats;
+	const mrpt::poses::CPose2D sensor = robotPose + mrpt::poses::CPose2D(scan.sensorPose);
+	const auto& dirs = m_sinCos.getSinCosForScan(scan);
+	const CTiledGridGeometry& geo = grid.geometry();
+	const TGlobalCell origin = geo.cellOf(sensor.x(), sensor.y());
+	const double c = std::cos(sensor.phi()), s = std::sin(sensor.phi());
+
+	for (size_t i = 0; i < scan.getScanSize(); ++i)
+	{
+		double range = scan.getScanRange(i);
+		if (!scan.getScanRangeValidity(i) || !std::isfinite(range) || range <= 0)
+		{
+			++stats.beams_skipped;
+			continue;
+		}
+		bool hit = true;
+		if (range > m_options.max_range_m)
+		{
+			if (!m_options.insert_free_beyond_range)
+			{
+				++stats.beams_skipped;
+				continue;
+			}
+			range = m_options.max_range_m;
+			hit = false;
+		}
+		if (hit && hitIsExcluded && i < hitIsExcluded->size() && (*hitIsExcluded)[i]) hit = false;
+
+		// Beam end point: sensor frame -> world frame.
+		const double lx = range * dirs.ccos[i], ly = range * dirs.csin[i];
+		const TGlobalCell end = geo.cellOf(sensor.x() + c * lx - s * ly, sensor.y() + s * lx + c * ly);
+		forEachCellOnSegment(origin, end, [&](const TGlobalCell& cell) {
+			const bool isEnd = (cell == end);
+			if (isEnd && hit)
+				grid.updateCell(cell, m_occupiedLogOdds);
+			else
+				grid.updateCell(cell, m_freeLogOdds);
+			++stats.cells_updated;
+		});
+		if (hit)
+			++stats.beams_hit;
+		else
+			++stats.beams_free_only;
+	}
+	return stats;
+}
+
+}  // namespace hslam::maps

@@ -1,0 +1,135 @@
+#include <hslam/maps/CTiledOccupancyGrid.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace hslam::maps
+{
+float probabilityToLogOdds(double p) { return static_cast<float>(std::log(p / (1.0 - p))); }
+double logOddsToProbability(double logOdds) { return 1.0 / (1.0 + std::exp(-logOdds)); }
+
+CTile::CTile(int sizeCells)
+	: m_size(sizeCells),
+	  m_logOdds(static_cast<size_t>(sizeCells) * sizeCells, 0.0f),
+	  m_observed(static_cast<size_t>(sizeCells) * sizeCells, 0)
+{
+}
+
+size_t CTile::observedCount() const { return static_cast<size_t>(std::count(m_observed.begin(), m_observed.end(), 1)); }
+
+CTiledOccupancyGrid::CTiledOccupancyGrid(const TOptions& options)
+	: m_options(options),
+	  m_geometry(options.resolution_m, options.tile_size_cells),
+	  m_clampLogOdds(probabilityToLogOdds(options.max_occupied_probability))
+{
+	if (!(options.max_occupied_probability > 0.5 && options.max_occupied_probability < 1.0))
+		throw std::invalid_argument("CTiledOccupancyGrid: max_occupied_probability must be in (0.5, 1)");
+}
+
+CTile& CTiledOccupancyGrid::tileFor(const TTileIndex& t)
+{
+	if (m_cachedTile && m_cachedIndex == t) return *m_cachedTile;
+	auto it = m_tiles.find(t);
+	if (it == m_tiles.end())
+	{
+		it = m_tiles.emplace(t, std::make_unique<CTile>(m_options.tile_size_cells)).first;
+		m_creationOrder.push_back(t);
+	}
+	m_cachedIndex = t;
+	m_cachedTile = it->second.get();
+	return *m_cachedTile;
+}
+
+const CTile* CTiledOccupancyGrid::findTile(const TTileIndex& t) const
+{
+	const auto it = m_tiles.find(t);
+	return it == m_tiles.end() ? nullptr : it->second.get();
+}
+
+void CTiledOccupancyGrid::updateCell(const TGlobalCell& c, float logOddsDelta)
+{
+	CTile& tile = tileFor(m_geometry.tileOf(c));
+	const TLocalCell local = m_geometry.localCellOf(c);
+	float& l = tile.logOdds(local);
+	l = std::clamp(l + logOddsDelta, -m_clampLogOdds, m_clampLogOdds);
+	tile.markObserved(local);
+}
+
+float CTiledOccupancyGrid::logOdds(const TGlobalCell& c) const
+{
+	const CTile* tile = findTile(m_geometry.tileOf(c));
+	return tile ? tile->logOdds(m_geometry.localCellOf(c)) : 0.0f;
+}
+
+double CTiledOccupancyGrid::occupancyProbability(const TGlobalCell& c) const { return logOddsToProbability(logOdds(c)); }
+
+bool CTiledOccupancyGrid::isObserved(const TGlobalCell& c) const
+{
+	const CTile* tile = findTile(m_geometry.tileOf(c));
+	return tile && tile->observed(m_geometry.localCellOf(c));
+}
+
+TCellBounds CTiledOccupancyGrid::tileExtent() const
+{
+	TCellBounds b;
+	bool first = true;
+	for (const auto& t : m_creationOrder)
+	{
+		const TCellBounds tb = m_geometry.tileBounds(t);
+		if (first)
+		{
+			b = tb;
+			first = false;
+			continue;
+		}
+		b.gxMin = std::min(b.gxMin, tb.gxMin);
+		b.gxMax = std::max(b.gxMax, tb.gxMax);
+		b.gyMin = std::min(b.gyMin, tb.gyMin);
+		b.gyMax = std::max(b.gyMax, tb.gyMax);
+	}
+	return b;
+}
+
+TCellBounds CTiledOccupancyGrid::observedBounds() const
+{
+	TCellBounds b{0, -1, 0, -1};
+	bool any = false;
+	const int n = m_options.tile_size_cells;
+	for (const auto& t : m_creationOrder)
+	{
+		const CTile& tile = *m_tiles.at(t);
+		for (int ly = 0; ly < n; ++ly)
+			for (int lx = 0; lx < n; ++lx)
+			{
+				if (!tile.observed({lx, ly})) continue;
+				const TGlobalCell g = m_geometry.globalCellOf(t, {lx, ly});
+				if (!any)
+				{
+					b = {g.gx, g.gx, g.gy, g.gy};
+					any = true;
+				}
+				b.gxMin = std::min(b.gxMin, g.gx);
+				b.gxMax = std::max(b.gxMax, g.gx);
+				b.gyMin = std::min(b.gyMin, g.gy);
+				b.gyMax = std::max(b.gyMax, g.gy);
+			}
+	}
+	return b;
+}
+
+size_t CTiledOccupancyGrid::memoryBytes() const
+{
+	size_t bytes = 0;
+	for (const auto& kv : m_tiles) bytes += kv.second->memoryBytes();
+	return bytes;
+}
+
+void CTiledOccupancyGrid::clear()
+{
+	m_tiles.clear();
+	m_creationOrder.clear();
+	m_cachedTile = nullptr;
+}
+
+}  // namespace hslam::maps

@@ -1,0 +1,102 @@
+#include <hslam/maps/grid_rendering.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace hslam::maps
+{
+namespace
+{
+size_t packRgb(uint8_t r, uint8_t g, uint8_t b) { return (size_t(r) << 16) | (size_t(g) << 8) | b; }
+
+size_t cellColour(const CTiledOccupancyGrid& grid, const TGlobalCell& cell)
+{
+	if (!grid.isObserved(cell)) return packRgb(kUnknownCellColour.R, kUnknownCellColour.G, kUnknownCellColour.B);
+	const auto grey = static_cast<uint8_t>(std::lround(255.0 * (1.0 - grid.occupancyProbability(cell))));
+	return packRgb(grey, grey, grey);
+}
+}  // namespace
+
+void TImageFrame::worldToPixel(double x_m, double y_m, double& col, double& row) const
+{
+	// Cell g spans [(g - 1/2) res, (g + 1/2) res); cell gxMin starts at column 0.
+	col = (x_m / resolution_m + 0.5 - cells.gxMin) * pixels_per_cell;
+	row = (cells.gyMax + 0.5 - y_m / resolution_m) * pixels_per_cell;
+}
+
+mrpt::img::CImage renderGrid(const CTiledOccupancyGrid& grid, const TImageFrame& frame)
+{
+	mrpt::img::CImage image(frame.widthPx(), frame.heightPx(), mrpt::img::CH_RGB);
+	const int k = frame.pixels_per_cell;
+	for (int gy = frame.cells.gyMin; gy <= frame.cells.gyMax; ++gy)
+		for (int gx = frame.cells.gxMin; gx <= frame.cells.gxMax; ++gx)
+		{
+			const size_t colour = cellColour(grid, {gx, gy});
+			const int col0 = (gx - frame.cells.gxMin) * k, row0 = (frame.cells.gyMax - gy) * k;
+			for (int dy = 0; dy < k; ++dy)
+				for (int dx = 0; dx < k; ++dx) image.setPixel(col0 + dx, row0 + dy, colour);
+		}
+	return image;
+}
+
+TImageFrame frameForObservedArea(const CTiledOccupancyGrid& grid, int marginCells, int pixelsPerCell)
+{
+	TImageFrame frame;
+	frame.resolution_m = grid.geometry().resolution_m();
+	frame.pixels_per_cell = pixelsPerCell;
+	TCellBounds b = grid.observedBounds();
+	if (b.empty()) b = {-10, 10, -10, 10};
+	frame.cells = {b.gxMin - marginCells, b.gxMax + marginCells, b.gyMin - marginCells, b.gyMax + marginCells};
+	return frame;
+}
+
+TImageFrame frameForTile(const CTiledOccupancyGrid& grid, const TTileIndex& tile, int pixelsPerCell)
+{
+	TImageFrame frame;
+	frame.resolution_m = grid.geometry().resolution_m();
+	frame.pixels_per_cell = pixelsPerCell;
+	frame.cells = grid.geometry().tileBounds(tile);
+	return frame;
+}
+
+void drawTrajectory(mrpt::img::CImage& image, const TImageFrame& frame, const std::vector<mrpt::math::TPose2D>& poses,
+					const mrpt::img::TColor& colour, unsigned widthPx)
+{
+	for (size_t i = 1; i < poses.size(); ++i)
+	{
+		double c0, r0, c1, r1;
+		frame.worldToPixel(poses[i - 1].x, poses[i - 1].y, c0, r0);
+		frame.worldToPixel(poses[i].x, poses[i].y, c1, r1);
+		image.line(static_cast<int>(c0), static_cast<int>(r0), static_cast<int>(c1), static_cast<int>(r1), colour,
+				   widthPx);
+	}
+	if (!poses.empty())
+	{
+		double c, r;
+		frame.worldToPixel(poses.front().x, poses.front().y, c, r);
+		image.drawCircle(static_cast<int>(c), static_cast<int>(r), 4, colour, 2);  // start marker
+	}
+}
+
+mrpt::maps::COccupancyGridMap2D toMrptGrid(const CTiledOccupancyGrid& grid, const TCellBounds& cells)
+{
+	const double res = grid.geometry().resolution_m();
+	// MRPT cell cx spans [xMin + cx res, xMin + (cx+1) res): aligning xMin with
+	// the lower edge of our first cell makes the cell centres coincide.
+	mrpt::maps::COccupancyGridMap2D out(
+		static_cast<float>((cells.gxMin - 0.5) * res), static_cast<float>((cells.gxMax + 0.5) * res),
+		static_cast<float>((cells.gyMin - 0.5) * res), static_cast<float>((cells.gyMax + 0.5) * res),
+		static_cast<float>(res));
+	for (int gy = cells.gyMin; gy <= cells.gyMax; ++gy)
+		for (int gx = cells.gxMin; gx <= cells.gxMax; ++gx)
+		{
+			if (!grid.isObserved({gx, gy})) continue;
+			const int cx = out.x2idx(gx * res), cy = out.y2idx(gy * res);
+			if (cx < 0 || cy < 0 || cx >= static_cast<int>(out.getSizeX()) || cy >= static_cast<int>(out.getSizeY()))
+				continue;
+			out.setCell(cx, cy, static_cast<float>(1.0 - grid.occupancyProbability({gx, gy})));
+		}
+	return out;
+}
+
+}  // namespace hslam::maps

@@ -1,0 +1,59 @@
+/* hslam: the batch mapping job behind `hslam-process`: reads a rawlog
+ * through the mapping pipeline with a progress bar, writes the outputs (see
+ * batch_outputs.h), and optionally evaluates the trajectory against a
+ * reference. A fault in the input (corrupt or truncated rawlog) stops the
+ * reading, but everything processed before it is still written. */
+#pragma once
+
+#include <hslam/slam/CMappingPipeline.h>
+#include <hslam/slam/batch_outputs.h>
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace hslam::slam
+{
+struct TBatchRequest
+{
+	std::string config_file;  //!< INI file (may be empty: all defaults)
+	std::vector<std::string> overrides;  //!< "SECTION.KEY=VALUE"
+	std::string input_rawlog;
+	std::string output_dir;
+	std::string ground_truth_tum;  //!< optional reference trajectory
+	bool show_progress = true;
+};
+
+struct TBatchResult
+{
+	TPipelineCounters counters;
+	std::string input_error;  //!< non-empty if reading stopped at a fault
+	std::vector<std::string> files_written;
+	bool evaluated = false;
+};
+
+class CBatchProcessor
+{
+   public:
+	/** `out` gets the summary, `err` the progress bar and error messages. */
+	CBatchProcessor(TBatchRequest request, std::ostream& out, std::ostream& err);
+
+	/** Runs the whole job. Configuration errors throw (common::config_error);
+	 * input faults are reported in the result after writing the outputs. */
+	TBatchResult run();
+
+	/** Sections accepted in the INI file. */
+	static std::vector<std::string> knownSections();
+
+   private:
+	void readRawlog(CMappingPipeline& pipeline, TBatchResult& result);
+	void evaluate(const CMappingPipeline& pipeline, TBatchResult& result);
+	void writeEffectiveConfig(const CMappingPipeline& pipeline, const TOutputOptions& outputOptions);
+	void printSummary(const CMappingPipeline& pipeline, const TBatchResult& result);
+
+	TBatchRequest m_request;
+	std::ostream& m_out;
+	std::ostream& m_err;
+};
+
+}  // namespace hslam::slam

@@ -1,0 +1,87 @@
+/* hslam: the mapping pipeline, the one place where the stages of thesis
+ * figure 55 are wired together and timed. Per laser scan:
+ *     odometry increment -> pose estimation -> tiled grid update (laser)
+ * Later stages (leg filter, line features, sonar) plug in here.
+ *
+ * INI sections read (see config_ini/hslam-default.ini): [process], [grid],
+ * [laser_model], [pose_estimation]; unknown keys in them are errors. */
+#pragma once
+
+#include <hslam/common/CStageTimer.h>
+#include <hslam/common/tum_trajectory.h>
+#include <hslam/io/CRawlogReader.h>
+#include <hslam/maps/CLaserGridInserter.h>
+#include <hslam/maps/CTiledOccupancyGrid.h>
+#include <hslam/slam/COdometryTracker.h>
+#include <hslam/slam/CPoseEstimator.h>
+#include <mrpt/config/CConfigFileBase.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hslam::slam
+{
+struct TProcessOptions
+{
+	std::string laser_label;  //!< only scans with this sensor label are used; empty = all 2D scans
+
+	template <class V>
+	void visit(V& v)
+	{
+		v.text("laser_label", laser_label);
+	}
+};
+
+struct TPipelineCounters
+{
+	size_t entries = 0;  //!< rawlog entries processed
+	size_t laser_scans = 0;  //!< scans used for mapping
+	size_t laser_scans_ignored = 0;  //!< scans with another sensor label
+	size_t odometry_readings = 0;  //!< odometry actions or observations
+	size_t odometry_gaps = 0;  //!< intervals with unknown motion
+	size_t other_observations = 0;  //!< observations no stage uses yet
+};
+
+class CMappingPipeline
+{
+   public:
+	/** Loads and checks all pipeline sections from `cfg`; throws
+	 * common::config_error with "[section] key" on a bad value. */
+	explicit CMappingPipeline(const mrpt::config::CConfigFileBase& cfg);
+
+	void processEntry(const io::TRawlogEntry& entry);
+
+	const maps::CTiledOccupancyGrid& grid() const { return m_grid; }
+	/** Estimated robot pose at each scan. */
+	const common::TTrajectory2D& trajectory() const { return m_trajectory; }
+	/** Dead-reckoning pose at each scan (same timestamps), for comparison. */
+	const common::TTrajectory2D& odometryTrajectory() const { return m_odometryTrajectory; }
+	common::CStageTimer& timer() { return m_timer; }
+	const common::CStageTimer& timer() const { return m_timer; }
+	const TPipelineCounters& counters() const { return m_counters; }
+	std::string poseEstimatorName() const { return m_estimator->name(); }
+
+	/** Writes the effective value of every pipeline option (defaults included). */
+	void saveOptions(mrpt::config::CConfigFileBase& out) const;
+
+	/** INI sections the pipeline reads. */
+	static std::vector<std::string> sections();
+
+   private:
+	void processObservation(const mrpt::obs::CObservation::Ptr& obs);
+	void processScan(const mrpt::obs::CObservation2DRangeScan& scan);
+
+	TProcessOptions m_processOptions;
+	TPoseEstimationOptions m_poseOptions;
+	maps::CTiledOccupancyGrid m_grid;
+	maps::CLaserGridInserter m_laserInserter;
+	std::unique_ptr<CPoseEstimator> m_estimator;
+	COdometryTracker m_odometry;
+	mrpt::poses::CPose2D m_deadReckoningPose;
+	common::TTrajectory2D m_trajectory, m_odometryTrajectory;
+	common::CStageTimer m_timer;
+	TPipelineCounters m_counters;
+};
+
+}  // namespace hslam::slam

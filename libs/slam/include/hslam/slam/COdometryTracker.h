@@ -1,0 +1,46 @@
+/* hslam: collects odometry from a rawlog (CActionRobotMovement2D increments
+ * in actions/sensory-frame rawlogs, absolute CObservationOdometry readings in
+ * observations-only rawlogs) and hands the pose change since the previous
+ * laser scan to the pose estimator.
+ *
+ * A missing increment (a "ODOMETRY_GAP" comment written by our CARMEN
+ * importer, or a CObservationOdometry chain that restarts) is reported as
+ * unknown motion, never silently as zero motion. */
+#pragma once
+
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <optional>
+
+namespace hslam::slam
+{
+/** Robot pose change between two laser scans, in the robot frame of the first. */
+struct TOdometryIncrement
+{
+	mrpt::poses::CPose2D delta;  //!< identity when unknown
+	bool known = true;  //!< false: odometry was missing for (part of) the interval
+};
+
+class COdometryTracker
+{
+   public:
+	/** Sensor label of the comment that marks missing odometry. */
+	static constexpr const char* kGapLabel = "ODOMETRY_GAP";
+
+	void addAction(const mrpt::obs::CActionRobotMovement2D& action);
+	void addOdometryObservation(const mrpt::obs::CObservationOdometry& odometry);
+	/** Declares that the motion since the last scan is unknown. */
+	void markGap() { m_gap = true; }
+
+	/** Pose change accumulated since the previous call (i.e. the previous scan). */
+	TOdometryIncrement takeIncrement();
+
+   private:
+	mrpt::poses::CPose2D m_accumulated;
+	std::optional<mrpt::poses::CPose2D> m_lastAbsolute;
+	bool m_gap = false;
+};
+
+}  // namespace hslam::slam

@@ -1,0 +1,44 @@
+/* hslam: the files the batch processor leaves in its output folder:
+ *   map.png             merged map, estimated trajectory (red) and odometry (orange)
+ *   tiles/tile_X_Y.png  one image per tile (tile indices relative to the home tile)
+ *   map.gridmap.gz      merged mrpt::maps::COccupancyGridMap2D (MRPT tools load it)
+ *   trajectory.tum      estimated pose per scan (TUM format)
+ *   odometry.tum        dead-reckoning pose per scan (TUM format)
+ *   timing.csv / .txt   per-stage time per scan: mean, p95, max */
+#pragma once
+
+#include <hslam/slam/CMappingPipeline.h>
+
+#include <string>
+#include <vector>
+
+namespace hslam::slam
+{
+struct TOutputOptions
+{
+	int map_pixels_per_cell = 2;  //!< scale of map.png
+	int map_margin_cells = 20;  //!< unknown border around the observed area in map.png
+	bool write_tiles = true;  //!< write tiles/tile_X_Y.png
+	int tile_pixels_per_cell = 1;  //!< scale of the tile images
+	bool draw_odometry = true;  //!< also draw the dead-reckoning path on map.png
+
+	template <class V>
+	void visit(V& v)
+	{
+		v.integer("map_pixels_per_cell", map_pixels_per_cell, 1, 16);
+		v.integer("map_margin_cells", map_margin_cells, 0, 1000);
+		v.flag("write_tiles", write_tiles);
+		v.integer("tile_pixels_per_cell", tile_pixels_per_cell, 1, 16);
+		v.flag("draw_odometry", draw_odometry);
+	}
+};
+
+/** Writes all outputs into `dir` (created if needed); returns the paths
+ * written. Throws std::runtime_error naming the file on a write failure. */
+std::vector<std::string> writeMappingOutputs(const CMappingPipeline& pipeline, const TOutputOptions& options,
+											 const std::string& dir);
+
+/** Saves a grid as a gz-compressed serialized COccupancyGridMap2D (.gridmap.gz). */
+void saveGridmapGz(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& path);
+
+}  // namespace hslam::slam

@@ -1,0 +1,114 @@
+#include <hslam/common/CProgressBar.h>
+#include <hslam/common/config_overrides.h>
+#include <hslam/common/options_io.h>
+#include <hslam/eval/evaluate_trajectory.h>
+#include <hslam/eval/evaluation_json.h>
+#include <hslam/eval/evaluation_table.h>
+#include <hslam/slam/CBatchProcessor.h>
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace hslam::slam
+{
+CBatchProcessor::CBatchProcessor(TBatchRequest request, std::ostream& out, std::ostream& err)
+	: m_request(std::move(request)), m_out(out), m_err(err)
+{
+}
+
+std::vector<std::string> CBatchProcessor::knownSections()
+{
+	auto sections = CMappingPipeline::sections();
+	sections.push_back("output");
+	return sections;
+}
+
+TBatchResult CBatchProcessor::run()
+{
+	const auto cfg = common::loadConfigWithOverrides(m_request.config_file, m_request.overrides);
+	common::checkKnownSections(cfg, knownSections());
+	CMappingPipeline pipeline(cfg);
+	TOutputOptions outputOptions;
+	common::loadOptions(outputOptions, cfg, "output");
+	std::filesystem::create_directories(m_request.output_dir);
+
+	TBatchResult result;
+	readRawlog(pipeline, result);
+	result.counters = pipeline.counters();
+	result.files_written = writeMappingOutputs(pipeline, outputOptions, m_request.output_dir);
+	writeEffectiveConfig(pipeline, outputOptions);
+	printSummary(pipeline, result);
+	if (!m_request.ground_truth_tum.empty()) evaluate(pipeline, result);
+	return result;
+}
+
+void CBatchProcessor::readRawlog(CMappingPipeline& pipeline, TBatchResult& result)
+{
+	const size_t total = m_request.show_progress ? io::CRawlogReader::countEntries(m_request.input_rawlog) : 0;
+	io::CRawlogReader reader(m_request.input_rawlog);
+	common::CProgressBar progress(m_err, common::CProgressBar::stderrIsTerminal(), total, "entries");
+	io::TRawlogEntry entry;
+	try
+	{
+		for (;;)
+		{
+			{
+				common::CStageTimer::CScope t(pipeline.timer(), "read");
+				if (!reader.next(entry)) break;
+			}
+			pipeline.processEntry(entry);
+			if (m_request.show_progress) progress.update(reader.entriesRead());
+		}
+	}
+	catch (const io::rawlog_error& e)
+	{
+		result.input_error = e.what();
+	}
+	if (m_request.show_progress) progress.finish();
+}
+
+void CBatchProcessor::writeEffectiveConfig(const CMappingPipeline& pipeline, const TOutputOptions& outputOptions)
+{
+	mrpt::config::CConfigFileMemory effective;
+	pipeline.saveOptions(effective);
+	common::saveOptions(outputOptions, effective, "output");
+	const std::string path = m_request.output_dir + "/config_used.ini";
+	std::ofstream f(path);
+	f << "; Effective configuration of this run (defaults and --set overrides included).\n"
+	  << effective.getContent();
+	if (!f) throw std::runtime_error(path + ": cannot write");
+}
+
+void CBatchProcessor::printSummary(const CMappingPipeline& pipeline, const TBatchResult& result)
+{
+	const auto& c = result.counters;
+	m_out << "Input:            " << m_request.input_rawlog << "\n"
+		  << "Pose estimation:  " << pipeline.poseEstimatorName() << "\n"
+		  << "Entries read:     " << c.entries << "\n"
+		  << "Laser scans used: " << c.laser_scans << " (ignored by label: " << c.laser_scans_ignored << ")\n"
+		  << "Odometry:         " << c.odometry_readings << " readings, " << c.odometry_gaps << " gaps\n"
+		  << "Tiles:            " << pipeline.grid().tileCount() << " (" << pipeline.grid().memoryBytes() / 1024
+		  << " KiB)\n\nTiming per call:\n";
+	pipeline.timer().printTable(m_out);
+	m_out << "\nResults written to " << m_request.output_dir << "/ (map.png, tiles/, map.gridmap.gz, "
+		  << "trajectory.tum, odometry.tum, timing.csv, config_used.ini)\n";
+	if (!result.input_error.empty())
+		m_err << "error: " << result.input_error << "\n"
+			  << "       results for the " << c.entries << " entries read before the fault were written.\n";
+}
+
+void CBatchProcessor::evaluate(const CMappingPipeline& pipeline, TBatchResult& result)
+{
+	const auto reference = common::readTumFile(m_request.ground_truth_tum);
+	eval::TEvaluationOptions options;
+	options.reference_label = m_request.ground_truth_tum;
+	options.estimate_label = m_request.output_dir + "/trajectory.tum";
+	const auto errors = eval::evaluateTrajectory(reference, pipeline.trajectory(), options);
+	m_out << "\nEvaluation against " << m_request.ground_truth_tum << ":\n";
+	eval::printEvaluation(m_out, errors);
+	eval::writeEvaluationJson(m_request.output_dir + "/evaluation.json", errors);
+	result.evaluated = true;
+}
+
+}  // namespace hslam::slam

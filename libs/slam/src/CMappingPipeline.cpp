@@ -1,0 +1,107 @@
+#include <hslam/common/options_io.h>
+#include <hslam/slam/CMappingPipeline.h>
+#include <mrpt/obs/CObservationComment.h>
+#include <mrpt/system/datetime.h>
+
+namespace hslam::slam
+{
+namespace
+{
+template <class TOptionsType>
+TOptionsType loaded(const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+{
+	TOptionsType options;
+	common::loadOptions(options, cfg, section);
+	return options;
+}
+
+common::TTimedPose2D timedPose(const mrpt::obs::CObservation& obs, const mrpt::poses::CPose2D& pose)
+{
+	return {mrpt::Clock::toDouble(obs.timestamp), {pose.x(), pose.y(), pose.phi()}};
+}
+}  // namespace
+
+std::vector<std::string> CMappingPipeline::sections() { return {"process", "grid", "laser_model", "pose_estimation"}; }
+
+CMappingPipeline::CMappingPipeline(const mrpt::config::CConfigFileBase& cfg)
+	: m_processOptions(loaded<TProcessOptions>(cfg, "process")),
+	  m_poseOptions(loaded<TPoseEstimationOptions>(cfg, "pose_estimation")),
+	  m_grid(loaded<maps::CTiledOccupancyGrid::TOptions>(cfg, "grid")),
+	  m_laserInserter(loaded<maps::CLaserGridInserter::TOptions>(cfg, "laser_model")),
+	  m_estimator(createPoseEstimator(m_poseOptions, cfg))
+{
+}
+
+void CMappingPipeline::saveOptions(mrpt::config::CConfigFileBase& out) const
+{
+	common::saveOptions(m_processOptions, out, "process");
+	common::saveOptions(m_grid.options(), out, "grid");
+	common::saveOptions(m_laserInserter.options(), out, "laser_model");
+	common::saveOptions(m_poseOptions, out, "pose_estimation");
+}
+
+void CMappingPipeline::processEntry(const io::TRawlogEntry& entry)
+{
+	++m_counters.entries;
+	if (entry.actions)
+	{
+		common::CStageTimer::CScope t(m_timer, "odometry");
+		if (auto move = entry.actions->getActionByClass<mrpt::obs::CActionRobotMovement2D>())
+		{
+			m_odometry.addAction(*move);
+			++m_counters.odometry_readings;
+		}
+	}
+	if (entry.frame)
+		for (const auto& obs : *entry.frame) processObservation(obs);
+	if (entry.observation) processObservation(entry.observation);
+}
+
+void CMappingPipeline::processObservation(const mrpt::obs::CObservation::Ptr& obs)
+{
+	if (auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(obs))
+	{
+		if (!m_processOptions.laser_label.empty() && scan->sensorLabel != m_processOptions.laser_label)
+			++m_counters.laser_scans_ignored;
+		else
+			processScan(*scan);
+	}
+	else if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(obs))
+	{
+		common::CStageTimer::CScope t(m_timer, "odometry");
+		m_odometry.addOdometryObservation(*odo);
+		++m_counters.odometry_readings;
+	}
+	else if (auto comment = std::dynamic_pointer_cast<mrpt::obs::CObservationComment>(obs);
+			 comment && comment->sensorLabel == COdometryTracker::kGapLabel)
+	{
+		m_odometry.markGap();
+		++m_counters.odometry_gaps;
+	}
+	else
+		++m_counters.other_observations;
+}
+
+void CMappingPipeline::processScan(const mrpt::obs::CObservation2DRangeScan& scan)
+{
+	++m_counters.laser_scans;
+	TOdometryIncrement increment;
+	{
+		common::CStageTimer::CScope t(m_timer, "odometry");
+		increment = m_odometry.takeIncrement();
+		if (increment.known) m_deadReckoningPose = m_deadReckoningPose + increment.delta;
+	}
+	mrpt::poses::CPose2D pose;
+	{
+		common::CStageTimer::CScope t(m_timer, "pose_estimation");
+		pose = m_estimator->update(increment, scan);
+	}
+	{
+		common::CStageTimer::CScope t(m_timer, "grid_update");
+		m_laserInserter.insert(m_grid, pose, scan);
+	}
+	m_trajectory.push_back(timedPose(scan, pose));
+	m_odometryTrajectory.push_back(timedPose(scan, m_deadReckoningPose));
+}
+
+}  // namespace hslam::slam

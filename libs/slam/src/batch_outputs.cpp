@@ -1,0 +1,98 @@
+#include <hslam/maps/grid_rendering.h>
+#include <hslam/slam/batch_outputs.h>
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+namespace hslam::slam
+{
+namespace
+{
+const mrpt::img::TColor kEstimateColour{220, 20, 20};
+const mrpt::img::TColor kOdometryColour{255, 150, 0};
+
+std::vector<mrpt::math::TPose2D> posesOf(const common::TTrajectory2D& trajectory)
+{
+	std::vector<mrpt::math::TPose2D> poses;
+	poses.reserve(trajectory.size());
+	for (const auto& p : trajectory) poses.push_back(p.pose);
+	return poses;
+}
+
+void savePng(const mrpt::img::CImage& image, const std::string& path)
+{
+	if (!image.saveToFile(path)) throw std::runtime_error(path + ": cannot write image");
+}
+
+std::string writeMergedMap(const CMappingPipeline& pipeline, const TOutputOptions& options, const std::string& dir)
+{
+	const auto& grid = pipeline.grid();
+	const maps::TImageFrame frame =
+		maps::frameForObservedArea(grid, options.map_margin_cells, options.map_pixels_per_cell);
+	mrpt::img::CImage image = maps::renderGrid(grid, frame);
+	if (options.draw_odometry && pipeline.poseEstimatorName() != "odometry")
+		maps::drawTrajectory(image, frame, posesOf(pipeline.odometryTrajectory()), kOdometryColour);
+	maps::drawTrajectory(image, frame, posesOf(pipeline.trajectory()), kEstimateColour);
+	const std::string path = dir + "/map.png";
+	savePng(image, path);
+	return path;
+}
+
+void writeTiles(const maps::CTiledOccupancyGrid& grid, int pixelsPerCell, const std::string& dir,
+				std::vector<std::string>& written)
+{
+	const std::string tileDir = dir + "/tiles";
+	std::filesystem::create_directories(tileDir);
+	for (const auto& t : grid.tilesInCreationOrder())
+	{
+		const std::string path = tileDir + "/tile_" + std::to_string(t.ix) + "_" + std::to_string(t.iy) + ".png";
+		savePng(maps::renderGrid(grid, maps::frameForTile(grid, t, pixelsPerCell)), path);
+		written.push_back(path);
+	}
+}
+
+void writeTiming(const common::CStageTimer& timer, const std::string& dir, std::vector<std::string>& written)
+{
+	std::ofstream csv(dir + "/timing.csv"), txt(dir + "/timing.txt");
+	if (!csv || !txt) throw std::runtime_error(dir + ": cannot write timing files");
+	timer.writeCsv(csv);
+	timer.printTable(txt);
+	written.push_back(dir + "/timing.csv");
+	written.push_back(dir + "/timing.txt");
+}
+}  // namespace
+
+void saveGridmapGz(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& path)
+{
+	mrpt::io::CFileGZOutputStream out;
+	if (!out.open(path)) throw std::runtime_error(path + ": cannot open for writing");
+	auto archive = mrpt::serialization::archiveFrom(out);
+	archive << grid;
+}
+
+std::vector<std::string> writeMappingOutputs(const CMappingPipeline& pipeline, const TOutputOptions& options,
+											 const std::string& dir)
+{
+	std::filesystem::create_directories(dir);
+	std::vector<std::string> written;
+	written.push_back(writeMergedMap(pipeline, options, dir));
+	if (options.write_tiles) writeTiles(pipeline.grid(), options.tile_pixels_per_cell, dir, written);
+
+	const auto& grid = pipeline.grid();
+	if (!grid.observedBounds().empty())
+	{
+		saveGridmapGz(maps::toMrptGrid(grid, grid.observedBounds()), dir + "/map.gridmap.gz");
+		written.push_back(dir + "/map.gridmap.gz");
+	}
+	common::writeTumFile(dir + "/trajectory.tum", pipeline.trajectory());
+	common::writeTumFile(dir + "/odometry.tum", pipeline.odometryTrajectory());
+	written.push_back(dir + "/trajectory.tum");
+	written.push_back(dir + "/odometry.tum");
+	writeTiming(pipeline.timer(), dir, written);
+	return written;
+}
+
+}  // namespace hslam::slam
