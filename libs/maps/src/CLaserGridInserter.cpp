@@ -1,5 +1,4 @@
 #include <hslam/maps/CLaserGridInserter.h>
-#include <hslam/maps/grid_ray_tracing.h>
 
 #include <cmath>
 
@@ -23,9 +22,11 @@ TLaserInsertStats CLaserGridInserter::insert(CTiledOccupancyGrid& grid, const mr
 	const TGlobalCell origin = geo.cellOf(sensor.x(), sensor.y());
 	const double c = std::cos(sensor.phi()), s = std::sin(sensor.phi());
 
-	for (size_t i = 0; i < scan.getScanSize(); ++i)
+	const size_t beams = scan.getScanSize();
+	const float* ranges = beams ? &scan.getScanRange(0) : nullptr;  // contiguous; avoids a call per beam
+	for (size_t i = 0; i < beams; ++i)
 	{
-		double range = scan.getScanRange(i);
+		double range = ranges[i];
 		if (!scan.getScanRangeValidity(i) || !std::isfinite(range) || range <= 0)
 		{
 			++stats.beams_skipped;
@@ -47,14 +48,7 @@ TLaserInsertStats CLaserGridInserter::insert(CTiledOccupancyGrid& grid, const mr
 		// Beam end point: sensor frame -> world frame.
 		const double lx = range * dirs.ccos[i], ly = range * dirs.csin[i];
 		const TGlobalCell end = geo.cellOf(sensor.x() + c * lx - s * ly, sensor.y() + s * lx + c * ly);
-		forEachCellOnSegment(origin, end, [&](const TGlobalCell& cell) {
-			const bool isEnd = (cell == end);
-			if (isEnd && hit)
-				grid.updateCell(cell, m_occupiedLogOdds);
-			else
-				grid.updateCell(cell, m_freeLogOdds);
-			++stats.cells_updated;
-		});
+		stats.cells_updated += grid.updateRay(origin, end, m_freeLogOdds, hit ? m_occupiedLogOdds : m_freeLogOdds);
 		if (hit)
 			++stats.beams_hit;
 		else

@@ -6,21 +6,15 @@
 namespace hslam::maps
 {
 CTiledGridGeometry::CTiledGridGeometry(double resolution_m, int tileSizeCells)
-	: m_resolution_m(resolution_m), m_tileSizeCells(tileSizeCells), m_half(tileSizeCells / 2)
+	: m_resolution_m(resolution_m), m_inverseResolution(1.0 / resolution_m), m_tileSizeCells(tileSizeCells), m_half(tileSizeCells / 2)
 {
 	if (!(resolution_m > 0) || tileSizeCells < 2)
 		throw std::invalid_argument("CTiledGridGeometry: resolution must be > 0 and tiles at least 2 cells wide");
 }
 
-TGlobalCell CTiledGridGeometry::cellOf(double x_m, double y_m) const
-{
-	return {static_cast<int>(std::floor(x_m / m_resolution_m + 0.5)),
-			static_cast<int>(std::floor(y_m / m_resolution_m + 0.5))};
-}
-
 mrpt::math::TPoint2D CTiledGridGeometry::cellCentre(const TGlobalCell& c) const
 {
-	return {c.gx * m_resolution_m, c.gy * m_resolution_m};
+	return {(c.gx + 0.5) * m_resolution_m, (c.gy + 0.5) * m_resolution_m};
 }
 
 TTileIndex CTiledGridGeometry::tileOf(const TGlobalCell& c) const

@@ -1,4 +1,5 @@
 #include <hslam/maps/CTiledOccupancyGrid.h>
+#include <hslam/maps/grid_ray_tracing.h>
 
 #include <algorithm>
 #include <cmath>
@@ -38,6 +39,7 @@ CTile& CTiledOccupancyGrid::tileFor(const TTileIndex& t)
 	}
 	m_cachedIndex = t;
 	m_cachedTile = it->second.get();
+	m_cachedBounds = m_geometry.tileBounds(t);
 	return *m_cachedTile;
 }
 
@@ -49,11 +51,61 @@ const CTile* CTiledOccupancyGrid::findTile(const TTileIndex& t) const
 
 void CTiledOccupancyGrid::updateCell(const TGlobalCell& c, float logOddsDelta)
 {
-	CTile& tile = tileFor(m_geometry.tileOf(c));
-	const TLocalCell local = m_geometry.localCellOf(c);
-	float& l = tile.logOdds(local);
+	selectTileOf(c);
+	const TLocalCell local = cachedLocal(c);
+	float& l = m_cachedTile->logOdds(local);
 	l = std::clamp(l + logOddsDelta, -m_clampLogOdds, m_clampLogOdds);
-	tile.markObserved(local);
+	m_cachedTile->markObserved(local);
+}
+
+size_t CTiledOccupancyGrid::updateRay(const TGlobalCell& from, const TGlobalCell& to, float crossedDelta,
+									  float endDelta)
+{
+	selectTileOf(from);
+	if (inCachedTile(to))
+		return updateRayInsideTile(*m_cachedTile, cachedLocal(from), cachedLocal(to), crossedDelta, endDelta);
+	// The ray crosses a tile border: cell by cell, switching tiles as needed.
+	size_t cells = 0;
+	forEachCellOnSegment(from, to, [&](const TGlobalCell& c) {
+		updateCell(c, c == to ? endDelta : crossedDelta);
+		++cells;
+	});
+	return cells;
+}
+
+size_t CTiledOccupancyGrid::updateRayInsideTile(CTile& tile, const TLocalCell& a, const TLocalCell& b,
+												float crossedDelta, float endDelta)
+{
+	// Bresenham on the tile's row-major arrays, stepping the linear index.
+	const int n = tile.size();
+	float* logOdds = tile.logOddsData();
+	uint8_t* observed = tile.observedData();
+	const float clampValue = m_clampLogOdds;
+	const int dx = std::abs(b.lx - a.lx), dy = -std::abs(b.ly - a.ly);
+	const int stepX = a.lx < b.lx ? 1 : -1, stepY = a.ly < b.ly ? n : -n;
+	int err = dx + dy;
+	int index = a.ly * n + a.lx;
+	const int endIndex = b.ly * n + b.lx;
+	size_t cells = 1;
+	for (; index != endIndex; ++cells)
+	{
+		logOdds[index] = std::clamp(logOdds[index] + crossedDelta, -clampValue, clampValue);
+		observed[index] = 1;
+		const int e2 = 2 * err;
+		if (e2 >= dy)
+		{
+			err += dy;
+			index += stepX;
+		}
+		if (e2 <= dx)
+		{
+			err += dx;
+			index += stepY;
+		}
+	}
+	logOdds[endIndex] = std::clamp(logOdds[endIndex] + endDelta, -clampValue, clampValue);
+	observed[endIndex] = 1;
+	return cells;
 }
 
 float CTiledOccupancyGrid::logOdds(const TGlobalCell& c) const

@@ -19,9 +19,9 @@ size_t cellColour(const CTiledOccupancyGrid& grid, const TGlobalCell& cell)
 
 void TImageFrame::worldToPixel(double x_m, double y_m, double& col, double& row) const
 {
-	// Cell g spans [(g - 1/2) res, (g + 1/2) res); cell gxMin starts at column 0.
-	col = (x_m / resolution_m + 0.5 - cells.gxMin) * pixels_per_cell;
-	row = (cells.gyMax + 0.5 - y_m / resolution_m) * pixels_per_cell;
+	// Cell g spans [g res, (g + 1) res); cell gxMin starts at column 0, row 0 is gyMax.
+	col = (x_m / resolution_m - cells.gxMin) * pixels_per_cell;
+	row = (cells.gyMax + 1 - y_m / resolution_m) * pixels_per_cell;
 }
 
 mrpt::img::CImage renderGrid(const CTiledOccupancyGrid& grid, const TImageFrame& frame)
@@ -81,17 +81,16 @@ void drawTrajectory(mrpt::img::CImage& image, const TImageFrame& frame, const st
 mrpt::maps::COccupancyGridMap2D toMrptGrid(const CTiledOccupancyGrid& grid, const TCellBounds& cells)
 {
 	const double res = grid.geometry().resolution_m();
-	// MRPT cell cx spans [xMin + cx res, xMin + (cx+1) res): aligning xMin with
-	// the lower edge of our first cell makes the cell centres coincide.
+	// MRPT cell cx spans [xMin + cx res, xMin + (cx+1) res) with xMin rounded to
+	// a multiple of res, like our cell edges: the cells coincide one to one.
 	mrpt::maps::COccupancyGridMap2D out(
-		static_cast<float>((cells.gxMin - 0.5) * res), static_cast<float>((cells.gxMax + 0.5) * res),
-		static_cast<float>((cells.gyMin - 0.5) * res), static_cast<float>((cells.gyMax + 0.5) * res),
-		static_cast<float>(res));
+		static_cast<float>(cells.gxMin * res), static_cast<float>((cells.gxMax + 1) * res),
+		static_cast<float>(cells.gyMin * res), static_cast<float>((cells.gyMax + 1) * res), static_cast<float>(res));
 	for (int gy = cells.gyMin; gy <= cells.gyMax; ++gy)
 		for (int gx = cells.gxMin; gx <= cells.gxMax; ++gx)
 		{
 			if (!grid.isObserved({gx, gy})) continue;
-			const int cx = out.x2idx(gx * res), cy = out.y2idx(gy * res);
+			const int cx = out.x2idx((gx + 0.5) * res), cy = out.y2idx((gy + 0.5) * res);
 			if (cx < 0 || cy < 0 || cx >= static_cast<int>(out.getSizeX()) || cy >= static_cast<int>(out.getSizeY()))
 				continue;
 			out.setCell(cx, cy, static_cast<float>(1.0 - grid.occupancyProbability({gx, gy})));

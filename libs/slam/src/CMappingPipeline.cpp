@@ -102,6 +102,7 @@ void CMappingPipeline::processScan(const mrpt::obs::CObservation2DRangeScan& sca
 	}
 	m_trajectory.push_back(timedPose(scan, pose));
 	m_odometryTrajectory.push_back(timedPose(scan, m_deadReckoningPose));
+	for (const auto& observer : m_scanObservers) observer(scan, pose);
 }
 
 }  // namespace hslam::slam

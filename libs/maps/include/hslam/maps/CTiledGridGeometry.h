@@ -1,23 +1,30 @@
 /* hslam: addressing of the tiled occupancy grid (thesis 4.6.1 i-ii).
  *
- * Cells are squares of `resolution_m` whose CENTRES lie on integer multiples
- * of the resolution, as in thesis eq. 81-82 (x_cell = 100 + ceil((x_r - 50)/100)
- * in mm for 0.1 m cells): global cell g covers [(g - 1/2) res, (g + 1/2) res).
- * Tiles hold N x N cells; tile (0,0) is the home tile, with the robot's start
- * (the world origin) at the centre of its local cell (N/2, N/2) = (100, 100).
+ * Cells are squares of `resolution_m` whose EDGES lie on integer multiples of
+ * the resolution: global cell g covers [g res, (g + 1) res). Tiles hold N x N
+ * cells; tile (0,0) is the home tile and the robot's start (the world origin)
+ * is its exact centre: it covers [-N/2 res, N/2 res) = [-10 m, 10 m) for the
+ * thesis' N = 200, res = 0.1 m.
  *
  * The thesis' formulas are written for a single 20 m tile (eq. 81-83) and its
- * tile version eq. 84 ("x_r = 200 T_x x 100 x_cell mm") is garbled; the general
- * form used here is
- *     g = floor(x / res + 1/2)                      (eq. 81-82, any resolution)
+ * tile version eq. 84 ("x_r = 200 T_x x 100 x_cell mm") is garbled. The
+ * general form used here is
+ *     g = floor(x / res)                            (eq. 81-82, any resolution)
  *     T = floor((g + N/2) / N),  l = g + N/2 - T N  (tile, local cell 0..N-1)
- *     x = (T N + l - N/2) res                       (eq. 83-84, cell centre)
- * which uses floor division so negative coordinates resolve to the tile on
- * their side of the border (C++ '/' truncates towards zero and would not). */
+ *     x = (T N + l - N/2 + 1/2) res                 (eq. 83-84, cell centre)
+ * with floor division, so negative coordinates resolve to the tile on their
+ * side of the border (C++ '/' truncates towards zero and would not).
+ * Deviation: eq. 81 (x_cell = 100 + ceil((x_mm - 50)/100)) centres local cell
+ * (100,100) on the start pose; here that cell has its lower-left corner there.
+ * The half-cell shift makes tile borders fall on round numbers (+-10 m) and
+ * cell edges coincide with those of MRPT's COccupancyGridMap2D, which rounds
+ * its limits to multiples of the resolution, so exported maps are
+ * cell-for-cell identical to ours. */
 #pragma once
 
 #include <mrpt/math/TPoint2D.h>
 
+#include <cmath>
 #include <cstddef>
 #include <functional>
 
@@ -39,7 +46,7 @@ struct TTileIndexHash
 	}
 };
 
-/** Cell index in the whole (unbounded) grid; cell (0,0) is centred on the origin. */
+/** Cell index in the whole (unbounded) grid; cell (0,0) spans [0, res) x [0, res). */
 struct TGlobalCell
 {
 	int gx = 0, gy = 0;
@@ -71,7 +78,11 @@ class CTiledGridGeometry
 	int tileSizeCells() const { return m_tileSizeCells; }
 	double tileSize_m() const { return m_resolution_m * m_tileSizeCells; }
 
-	TGlobalCell cellOf(double x_m, double y_m) const;
+	TGlobalCell cellOf(double x_m, double y_m) const
+	{
+		return {static_cast<int>(std::floor(x_m * m_inverseResolution)),
+				static_cast<int>(std::floor(y_m * m_inverseResolution))};
+	}
 	mrpt::math::TPoint2D cellCentre(const TGlobalCell& c) const;
 
 	TTileIndex tileOf(const TGlobalCell& c) const;
@@ -83,6 +94,7 @@ class CTiledGridGeometry
 
    private:
 	double m_resolution_m;
+	double m_inverseResolution;
 	int m_tileSizeCells;
 	int m_half;  //!< N/2: local index of the cell centred on the tile centre
 };

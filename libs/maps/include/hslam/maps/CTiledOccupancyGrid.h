@@ -25,6 +25,10 @@ class CTile
    public:
 	explicit CTile(int sizeCells);
 	float& logOdds(const TLocalCell& c) { return m_logOdds[index(c)]; }
+	/** Raw storage for tight loops: row-major, index = ly * N + lx. */
+	float* logOddsData() { return m_logOdds.data(); }
+	uint8_t* observedData() { return m_observed.data(); }
+	int size() const { return m_size; }
 	float logOdds(const TLocalCell& c) const { return m_logOdds[index(c)]; }
 	bool observed(const TLocalCell& c) const { return m_observed[index(c)] != 0; }
 	void markObserved(const TLocalCell& c) { m_observed[index(c)] = 1; }
@@ -67,6 +71,12 @@ class CTiledOccupancyGrid
 	 * given as log-odds (thesis eq. 85); creates the tile if needed. */
 	void updateCell(const TGlobalCell& c, float logOddsDelta);
 
+	/** Updates the cells on the digital segment from `from` to `to` (both
+	 * included): every cell but the last with `crossedDelta`, the last with
+	 * `endDelta`. Returns the number of cells updated. Rays inside one tile
+	 * (almost all of them) run on the tile's raw storage. */
+	size_t updateRay(const TGlobalCell& from, const TGlobalCell& to, float crossedDelta, float endDelta);
+
 	/** Log-odds of occupancy (0 for never-observed cells). */
 	float logOdds(const TGlobalCell& c) const;
 	/** Probability of occupancy (0.5 for never-observed cells). */
@@ -88,6 +98,20 @@ class CTiledOccupancyGrid
 
    private:
 	CTile& tileFor(const TTileIndex& t);
+	/** Makes the tile holding `c` the cached one (created if needed). */
+	void selectTileOf(const TGlobalCell& c)
+	{
+		if (!inCachedTile(c)) tileFor(m_geometry.tileOf(c));
+	}
+	bool inCachedTile(const TGlobalCell& c) const
+	{
+		return m_cachedTile && c.gx >= m_cachedBounds.gxMin && c.gx <= m_cachedBounds.gxMax &&
+			   c.gy >= m_cachedBounds.gyMin && c.gy <= m_cachedBounds.gyMax;
+	}
+	/** Local cell of `c` in the cached tile (no divisions). */
+	TLocalCell cachedLocal(const TGlobalCell& c) const { return {c.gx - m_cachedBounds.gxMin, c.gy - m_cachedBounds.gyMin}; }
+	size_t updateRayInsideTile(CTile& tile, const TLocalCell& a, const TLocalCell& b, float crossedDelta,
+							   float endDelta);
 
 	TOptions m_options;
 	CTiledGridGeometry m_geometry;
@@ -97,6 +121,7 @@ class CTiledOccupancyGrid
 	// Last tile touched: consecutive cells of a ray are almost always in it.
 	TTileIndex m_cachedIndex;
 	CTile* m_cachedTile = nullptr;
+	TCellBounds m_cachedBounds;  //!< global cells of the cached tile
 };
 
 /** log(p / (1 - p)) */

@@ -16,6 +16,7 @@
 #include <hslam/slam/CPoseEstimator.h>
 #include <mrpt/config/CConfigFileBase.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -62,6 +63,11 @@ class CMappingPipeline
 	const TPipelineCounters& counters() const { return m_counters; }
 	std::string poseEstimatorName() const { return m_estimator->name(); }
 
+	/** Called for every mapped scan with the pose it was inserted at
+	 * (benchmarks, debug images, live viewers). */
+	using TScanObserver = std::function<void(const mrpt::obs::CObservation2DRangeScan&, const mrpt::poses::CPose2D&)>;
+	void addScanObserver(TScanObserver observer) { m_scanObservers.push_back(std::move(observer)); }
+
 	/** Writes the effective value of every pipeline option (defaults included). */
 	void saveOptions(mrpt::config::CConfigFileBase& out) const;
 
@@ -82,6 +88,7 @@ class CMappingPipeline
 	common::TTrajectory2D m_trajectory, m_odometryTrajectory;
 	common::CStageTimer m_timer;
 	TPipelineCounters m_counters;
+	std::vector<TScanObserver> m_scanObservers;
 };
 
 }  // namespace hslam::slam

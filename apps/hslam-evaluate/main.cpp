@@ -1,0 +1,84 @@
+/* hslam-evaluate: ATE and RPE of an estimated 2D trajectory against a
+ * reference trajectory, both TUM files. Prints a table; --json also writes
+ * the figures to a file. Exit code 0 on success, 1 on any error. */
+#include <hslam/common/parse_number.h>
+#include <hslam/eval/evaluate_trajectory.h>
+#include <hslam/eval/evaluation_json.h>
+#include <hslam/eval/evaluation_table.h>
+
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+
+#include <cstdio>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+
+namespace
+{
+/** TCLAP's parse() returns false both after --help/--version and after a
+ * usage error (already reported); only the former is a success. */
+bool helpOrVersionRequested(int argc, char** argv)
+{
+	for (int i = 1; i < argc; ++i)
+	{
+		const std::string arg = argv[i];
+		if (arg == "-h" || arg == "--help" || arg == "--version") return true;
+	}
+	return false;
+}
+
+std::string formatSeconds(double seconds)
+{
+	char text[32];
+	std::snprintf(text, sizeof(text), "%g", seconds);
+	return text;
+}
+
+double parseMaxDt_s(const std::string& text)
+{
+	const auto value = hslam::common::tryParseDouble(text);
+	if (!value || *value < 0)
+		throw std::runtime_error("--max-dt: expected a number of seconds >= 0, got '" + text + "'");
+	return *value;
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+	try
+	{
+		hslam::eval::TEvaluationOptions options;
+		TCLAP::CmdLine cmd(
+			"Evaluates an estimated trajectory against a reference (TUM files): poses are matched by "
+			"timestamp, ATE is computed after the best SE(2) alignment, RPE for consecutive poses and "
+			"for poses 1 m and 5 m of reference travel apart.",
+			' ', "hslam");
+		TCLAP::UnlabeledValueArg<std::string> referenceArg("reference", "Reference trajectory (TUM file)", true, "",
+														   "REFERENCE.tum", cmd);
+		TCLAP::UnlabeledValueArg<std::string> estimateArg("estimate", "Estimated trajectory (TUM file)", true, "",
+														  "ESTIMATE.tum", cmd);
+		TCLAP::ValueArg<std::string> jsonArg("", "json", "Also write the figures to this JSON file", false, "",
+											 "OUT.json", cmd);
+		TCLAP::ValueArg<std::string> maxDtArg("", "max-dt",
+											  "Largest timestamp difference (s) between matched poses (default " +
+												  formatSeconds(options.max_dt_s) + ")",
+											  false, formatSeconds(options.max_dt_s), "S", cmd);
+		if (!cmd.parse(argc, argv)) return helpOrVersionRequested(argc, argv) ? 0 : 1;
+
+		options.max_dt_s = parseMaxDt_s(maxDtArg.getValue());
+		const auto errors = hslam::eval::evaluateTumFiles(referenceArg.getValue(), estimateArg.getValue(), options);
+		hslam::eval::printEvaluation(std::cout, errors);
+		if (jsonArg.isSet())
+		{
+			hslam::eval::writeEvaluationJson(jsonArg.getValue(), errors);
+			std::cout << "\nJSON written to " << jsonArg.getValue() << "\n";
+		}
+		return 0;
+	}
+	catch (const std::exception& e)
+	{
+		std::cerr << "hslam-evaluate: error: " << e.what() << "\n";
+		return 1;
+	}
+}

@@ -1,0 +1,105 @@
+/* hslam: writing an evaluation as JSON. */
+#include <hslam/eval/evaluation_json.h>
+
+#include <mrpt/core/bits_math.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace hslam::eval
+{
+namespace
+{
+/** Ordered key -> JSON value text. */
+using TJsonFields = std::vector<std::pair<std::string, std::string>>;
+
+std::string jsonNumber(double value, const char* format = "%.10g")
+{
+	if (!std::isfinite(value)) return "null";
+	char text[64];
+	std::snprintf(text, sizeof(text), format, value);
+	return text;
+}
+
+std::string jsonCount(size_t value) { return std::to_string(value); }
+
+std::string jsonString(const std::string& value)
+{
+	std::string out = "\"";
+	for (const char c : value)
+	{
+		if (c == '"' || c == '\\') out += std::string("\\") + c;
+		else if (static_cast<unsigned char>(c) < 0x20)
+		{
+			char escaped[8];
+			std::snprintf(escaped, sizeof(escaped), "\\u%04x", static_cast<unsigned>(c));
+			out += escaped;
+		}
+		else out += c;
+	}
+	return out + "\"";
+}
+
+void addTimeRange(TJsonFields& f, const std::string& prefix, const TTimeRange& t)
+{
+	f.emplace_back(prefix + "_t_first_s", t.empty ? "null" : jsonNumber(t.first_s, "%.6f"));
+	f.emplace_back(prefix + "_t_last_s", t.empty ? "null" : jsonNumber(t.last_s, "%.6f"));
+}
+
+void addStats(TJsonFields& f, const std::string& prefix, const std::string& unit, const TErrorStats& s)
+{
+	f.emplace_back(prefix + "_rmse_" + unit, s.empty() ? "null" : jsonNumber(s.rmse));
+	f.emplace_back(prefix + "_mean_" + unit, s.empty() ? "null" : jsonNumber(s.mean));
+	f.emplace_back(prefix + "_max_" + unit, s.empty() ? "null" : jsonNumber(s.max));
+}
+
+TJsonFields evaluationFields(const TTrajectoryErrors& e)
+{
+	TJsonFields f = {{"reference", jsonString(e.reference_label)},
+					 {"estimate", jsonString(e.estimate_label)},
+					 {"max_dt_s", jsonNumber(e.max_dt_s)},
+					 {"reference_poses", jsonCount(e.reference_poses)},
+					 {"estimate_poses", jsonCount(e.estimate_poses)}};
+	addTimeRange(f, "reference", e.reference_time);
+	addTimeRange(f, "estimate", e.estimate_time);
+	f.emplace_back("matched", jsonCount(e.matched));
+	f.emplace_back("unmatched_reference", jsonCount(e.unmatched_reference));
+	f.emplace_back("unmatched_estimate", jsonCount(e.unmatched_estimate));
+	f.emplace_back("alignment_x_m", jsonNumber(e.ate.alignment.x));
+	f.emplace_back("alignment_y_m", jsonNumber(e.ate.alignment.y));
+	f.emplace_back("alignment_phi_deg", jsonNumber(mrpt::RAD2DEG(e.ate.alignment.phi)));
+	addStats(f, "ate", "m", e.ate.position_m);
+	for (const auto& r : e.rpe)
+	{
+		f.emplace_back("rpe_" + r.name + "_pairs", jsonCount(r.errors.pairs()));
+		addStats(f, "rpe_" + r.name + "_trans", "m", r.errors.trans_m);
+		addStats(f, "rpe_" + r.name + "_rot", "deg", r.errors.rot_deg);
+	}
+	return f;
+}
+
+}  // namespace
+
+std::string evaluationToJson(const TTrajectoryErrors& errors)
+{
+	const TJsonFields fields = evaluationFields(errors);
+	std::string out = "{\n";
+	for (size_t k = 0; k < fields.size(); ++k)
+		out += "  " + jsonString(fields[k].first) + ": " + fields[k].second + (k + 1 < fields.size() ? ",\n" : "\n");
+	return out + "}\n";
+}
+
+void writeEvaluationJson(const std::string& path, const TTrajectoryErrors& errors)
+{
+	std::ofstream out(path);
+	if (!out) throw std::runtime_error(path + ": cannot open for writing");
+	out << evaluationToJson(errors);
+	out.close();
+	if (!out) throw std::runtime_error(path + ": write failed");
+}
+
+}  // namespace hslam::eval
