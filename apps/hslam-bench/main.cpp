@@ -21,7 +21,7 @@ int main(int argc, char** argv)
 									 5, "N", cmd);
 	try
 	{
-		cmd.parse(argc, argv);
+		if (!cmd.parse(argc, argv)) return 0;  // --help or --version was printed
 		std::vector<std::string> inputs = rawlogs.getValue();
 		if (inputs.empty()) inputs.push_back(hslam::bench::kMrptSampleRawlog);
 		if (suite.getValue() == "grid") return hslam::bench::runGridSuite(inputs, std::max(1, repetitions.getValue()));

@@ -29,7 +29,7 @@ int main(int argc, char** argv)
 	TCLAP::SwitchArg quiet("q", "quiet", "no progress bar", cmd);
 	try
 	{
-		cmd.parse(argc, argv);
+		if (!cmd.parse(argc, argv)) return 0;  // --help or --version was printed
 		hslam::slam::TBatchRequest request;
 		request.config_file = config.getValue();
 		request.overrides = set.getValue();

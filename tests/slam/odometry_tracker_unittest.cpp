@@ -1,0 +1,62 @@
+#include <gtest/gtest.h>
+#include <hslam/slam/COdometryTracker.h>
+#include <mrpt/poses/CPosePDFGaussian.h>
+
+using hslam::slam::COdometryTracker;
+using mrpt::poses::CPose2D;
+
+namespace
+{
+mrpt::obs::CObservationOdometry odometryAt(double x, double y, double phi)
+{
+	mrpt::obs::CObservationOdometry o;
+	o.odometry = CPose2D(x, y, phi);
+	return o;
+}
+
+void expectPose(const CPose2D& p, double x, double y, double phi)
+{
+	EXPECT_NEAR(p.x(), x, 1e-9);
+	EXPECT_NEAR(p.y(), y, 1e-9);
+	EXPECT_NEAR(std::remainder(p.phi() - phi, 2 * M_PI), 0.0, 1e-9);
+}
+}  // namespace
+
+TEST(OdometryTracker, AbsoluteReadingsGiveIncrementsInTheRobotFrame)
+{
+	COdometryTracker tracker;
+	tracker.addOdometryObservation(odometryAt(1.0, 1.0, M_PI / 2));
+	EXPECT_TRUE(tracker.takeIncrement().known);  // first reading: origin only, zero motion
+	tracker.addOdometryObservation(odometryAt(1.0, 1.5, M_PI / 2));
+	tracker.addOdometryObservation(odometryAt(1.0, 2.0, M_PI));
+	const auto inc = tracker.takeIncrement();
+	ASSERT_TRUE(inc.known);
+	expectPose(inc.delta, 1.0, 0.0, M_PI / 2);  // 1 m forward in the robot frame, then a left turn
+	expectPose(tracker.takeIncrement().delta, 0, 0, 0);  // nothing since
+}
+
+TEST(OdometryTracker, ActionsAreComposed)
+{
+	COdometryTracker tracker;
+	mrpt::obs::CActionRobotMovement2D a;
+	a.poseChange = mrpt::poses::CPosePDFGaussian::Create(mrpt::poses::CPosePDFGaussian(CPose2D(1.0, 0, M_PI / 2)));
+	tracker.addAction(a);
+	tracker.addAction(a);
+	expectPose(tracker.takeIncrement().delta, 1.0, 1.0, M_PI);
+}
+
+TEST(OdometryTracker, GapIsUnknownMotionNotZeroMotion)
+{
+	COdometryTracker tracker;
+	tracker.addOdometryObservation(odometryAt(0, 0, 0));
+	tracker.takeIncrement();
+	tracker.markGap();
+	tracker.addOdometryObservation(odometryAt(3, 0, 0));
+	const auto inc = tracker.takeIncrement();
+	EXPECT_FALSE(inc.known);
+	// next interval is known again
+	tracker.addOdometryObservation(odometryAt(4, 0, 0));
+	const auto next = tracker.takeIncrement();
+	EXPECT_TRUE(next.known);
+	expectPose(next.delta, 1.0, 0, 0);
+}
