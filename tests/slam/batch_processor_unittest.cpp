@@ -7,6 +7,7 @@
 #include <hslam/testing/temp_dir.h>
 #include <hslam/testing/test_paths.h>
 #include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/io/CFileOutputStream.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/obs/CObservationComment.h>
@@ -167,4 +168,45 @@ TEST(BatchProcessor, AppCommandLine)
 	std::ifstream err(dir.file("err.txt"));
 	std::string message((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
 	EXPECT_NE(message.find("/nonexistent.rawlog"), std::string::npos) << message;
+}
+
+TEST(BatchProcessor, OdometryGapCommentMeansUnknownMotion)
+{
+	// Observations-only rawlog as written by hslam-carmen2rawlog: the third
+	// scan has no odometry but an ODOMETRY_GAP comment instead.
+	hslam::testing::CTempDir dir;
+	{
+		mrpt::io::CFileGZOutputStream out(dir.file("gap.rawlog"));
+		auto arch = mrpt::serialization::archiveFrom(out);
+		double t = 1000.0;
+		const auto odometry = [&](double x) {
+			mrpt::obs::CObservationOdometry o;
+			o.odometry = mrpt::poses::CPose2D(x, 0, 0);
+			o.timestamp = mrpt::Clock::fromDouble(t);
+			arch << o;
+		};
+		const auto scan = [&]() {
+			mrpt::obs::CObservation2DRangeScan s;
+			s.aperture = static_cast<float>(M_PI);
+			s.resizeScan(5);
+			for (size_t i = 0; i < 5; ++i) s.setScanRange(i, 1.0f), s.setScanRangeValidity(i, true);
+			s.timestamp = mrpt::Clock::fromDouble(t);
+			t += 1.0;
+			arch << s;
+		};
+		odometry(0.0), scan();
+		odometry(1.0), scan();
+		mrpt::obs::CObservationComment gap;
+		gap.text = "ODOMETRY_GAP: odometry missing between front scans 1 and 2";
+		arch << gap;
+		scan();
+		odometry(2.0), scan();  // the importer's chain: +1 m after the gap
+	}
+	const auto result = runBatch(dir.file("gap.rawlog"), dir.file("out"));
+	EXPECT_EQ(result.counters.odometry_gaps, 1u);
+	const auto trajectory = common::readTumFile(dir.file("out/trajectory.tum"));
+	ASSERT_EQ(trajectory.size(), 4u);
+	EXPECT_NEAR(trajectory[1].pose.x, 1.0, 1e-9);
+	EXPECT_NEAR(trajectory[2].pose.x, 1.0, 1e-9);  // unknown motion: pose kept, not invented
+	EXPECT_NEAR(trajectory[3].pose.x, 2.0, 1e-9);
 }

@@ -73,7 +73,7 @@ void CMappingPipeline::processObservation(const mrpt::obs::CObservation::Ptr& ob
 		++m_counters.odometry_readings;
 	}
 	else if (auto comment = std::dynamic_pointer_cast<mrpt::obs::CObservationComment>(obs);
-			 comment && comment->sensorLabel == COdometryTracker::kGapLabel)
+			 comment && COdometryTracker::isGapMarker(*comment))
 	{
 		m_odometry.markGap();
 		++m_counters.odometry_gaps;

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationComment.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/poses/CPose2D.h>
 
@@ -26,8 +27,13 @@ struct TOdometryIncrement
 class COdometryTracker
 {
    public:
-	/** Sensor label of the comment that marks missing odometry. */
-	static constexpr const char* kGapLabel = "ODOMETRY_GAP";
+	/** Prefix of the CObservationComment text that marks missing odometry
+	 * (MRPT does not serialize a comment's sensorLabel, so the text carries it). */
+	static constexpr const char* kGapMarker = "ODOMETRY_GAP";
+	static bool isGapMarker(const mrpt::obs::CObservationComment& comment)
+	{
+		return comment.text.rfind(kGapMarker, 0) == 0;
+	}
 
 	void addAction(const mrpt::obs::CActionRobotMovement2D& action);
 	void addOdometryObservation(const mrpt::obs::CObservationOdometry& odometry);

@@ -1,0 +1,69 @@
+/* hslam-carmen2rawlog: converts a CARMEN log (plain or .gz) into an
+ * observations-only MRPT rawlog plus a TUM file of reference poses.
+ * All the work is in hslam::io::convertCarmenLog (libs/io). */
+#include <hslam/common/options_io.h>
+#include <hslam/io/carmen_import.h>
+
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <iostream>
+#include <string>
+
+namespace
+{
+/** Command-line values go through the options' own checks (range, choices). */
+hslam::io::TCarmenImportOptions optionsFrom(bool lenient, const std::string& clock, const std::string& period,
+											const std::string& maxRange)
+{
+	mrpt::config::CConfigFileMemory cfg;
+	cfg.write("carmen_import", "lenient", lenient ? "true" : "false");
+	cfg.write("carmen_import", "clock", clock);
+	cfg.write("carmen_import", "synthetic_period_s", period);
+	cfg.write("carmen_import", "max_range_m", maxRange);
+	hslam::io::TCarmenImportOptions options;
+	hslam::common::loadOptions(options, cfg, "carmen_import");
+	return options;
+}
+bool helpOrVersionAsked(int argc, char** argv)
+{
+	for (int i = 1; i < argc; ++i)
+	{
+		const std::string arg = argv[i];
+		if (arg == "-h" || arg == "--help" || arg == "--version") return true;
+	}
+	return false;
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+	try
+	{
+		TCLAP::CmdLine cmd("hslam-carmen2rawlog: CARMEN log -> MRPT rawlog (observations) + TUM reference poses", ' ',
+						   "0.1");
+		TCLAP::UnlabeledValueArg<std::string> input("input", "CARMEN log (.log or .log.gz)", true, "", "IN.log[.gz]", cmd);
+		TCLAP::UnlabeledValueArg<std::string> output("output", "Output rawlog (gz-compressed)", true, "", "OUT.rawlog", cmd);
+		TCLAP::ValueArg<std::string> reference("", "reference", "Output TUM file with the reference poses", true, "",
+											   "OUT.tum", cmd);
+		TCLAP::SwitchArg lenient("", "lenient", "Skip and count malformed lines instead of failing", cmd);
+		TCLAP::ValueArg<std::string> clock("", "clock", "Scan clock: auto|ipc|logger|synthetic", false, "auto", "CLOCK",
+										   cmd);
+		TCLAP::ValueArg<std::string> period("", "synthetic-period", "Synthetic clock period (s)", false, "1.0", "S", cmd);
+		TCLAP::ValueArg<std::string> maxRange("", "max-range",
+											  "No-return range (m); default: derived from the log", false, "0", "M", cmd);
+		// MRPT's TCLAP returns false (after printing) for --help/--version and for bad arguments.
+		if (!cmd.parse(argc, argv)) return helpOrVersionAsked(argc, argv) ? 0 : 1;
+
+		const auto options = optionsFrom(lenient.getValue(), clock.getValue(), period.getValue(), maxRange.getValue());
+		const auto report =
+			hslam::io::convertCarmenLog(input.getValue(), output.getValue(), reference.getValue(), options);
+		std::cout << hslam::io::formatCarmenImportReport(report);
+		return 0;
+	}
+	catch (const std::exception& e)
+	{
+		std::cerr << "hslam-carmen2rawlog: error: " << e.what() << "\n";
+		return 1;
+	}
+}

@@ -1,0 +1,63 @@
+/* hslam: building MRPT observations from CARMEN messages. */
+#include <hslam/io/carmen_observations.h>
+
+#include <mrpt/core/Clock.h>
+
+namespace hslam::io
+{
+std::string carmenScanLabel(const TCarmenLaser& laser)
+{
+	switch (laser.role)
+	{
+		case TCarmenLaserRole::lrFront:
+			return "LASER";
+		case TCarmenLaserRole::lrRear:
+			return "REAR_LASER";
+		case TCarmenLaserRole::lrRaw:
+			break;
+	}
+	return laser.rawIndex <= 1 ? "LASER" : "LASER" + std::to_string(laser.rawIndex);
+}
+
+mrpt::obs::CObservation2DRangeScan::Ptr makeCarmenScan(const TCarmenLaser& laser, const TCarmenScanGeometry& geometry,
+													   const mrpt::poses::CPose3D& sensorPose,
+													   const TCarmenRangeLimits& limits, double t_s)
+{
+	auto scan = mrpt::obs::CObservation2DRangeScan::Create();
+	scan->sensorLabel = carmenScanLabel(laser);
+	scan->timestamp = mrpt::Clock::fromDouble(t_s);
+	scan->aperture = static_cast<float>(geometry.aperture_rad);
+	scan->rightToLeft = true;  // CARMEN beams go counter-clockwise
+	scan->maxRange = static_cast<float>(limits.maxRange_m);
+	scan->stdError = kCarmenRangeStdError_m;
+	scan->sensorPose = sensorPose;
+	scan->resizeScan(laser.ranges_m.size());
+	for (size_t i = 0; i < laser.ranges_m.size(); ++i)
+	{
+		scan->setScanRange(i, static_cast<float>(laser.ranges_m[i]));
+		scan->setScanRangeValidity(i, limits.isValid(laser.ranges_m[i]));
+	}
+	return scan;
+}
+
+mrpt::obs::CObservationOdometry::Ptr makeCarmenOdometry(const TCarmenOdometryStep& step, double t_s)
+{
+	auto odo = mrpt::obs::CObservationOdometry::Create();
+	odo->sensorLabel = "ODOMETRY";
+	odo->timestamp = mrpt::Clock::fromDouble(t_s);
+	odo->odometry = step.chainPose;
+	odo->hasVelocities = step.hasVelocities;
+	odo->velocityLocal = mrpt::math::TTwist2D(step.tv_mps, 0.0, step.rv_radps);
+	return odo;
+}
+
+mrpt::obs::CObservationComment::Ptr makeComment(const std::string& label, const std::string& text, double t_s)
+{
+	auto comment = mrpt::obs::CObservationComment::Create();
+	comment->sensorLabel = label;
+	comment->timestamp = mrpt::Clock::fromDouble(t_s);
+	comment->text = text;
+	return comment;
+}
+
+}  // namespace hslam::io
