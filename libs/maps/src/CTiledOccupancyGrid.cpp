@@ -125,28 +125,13 @@ bool CTiledOccupancyGrid::isObserved(const TGlobalCell& c) const
 TCellBounds CTiledOccupancyGrid::tileExtent() const
 {
 	TCellBounds b;
-	bool first = true;
-	for (const auto& t : m_creationOrder)
-	{
-		const TCellBounds tb = m_geometry.tileBounds(t);
-		if (first)
-		{
-			b = tb;
-			first = false;
-			continue;
-		}
-		b.gxMin = std::min(b.gxMin, tb.gxMin);
-		b.gxMax = std::max(b.gxMax, tb.gxMax);
-		b.gyMin = std::min(b.gyMin, tb.gyMin);
-		b.gyMax = std::max(b.gyMax, tb.gyMax);
-	}
+	for (const auto& t : m_creationOrder) b.include(m_geometry.tileBounds(t));
 	return b;
 }
 
 TCellBounds CTiledOccupancyGrid::observedBounds() const
 {
-	TCellBounds b{0, -1, 0, -1};
-	bool any = false;
+	TCellBounds b;
 	const int n = m_options.tile_size_cells;
 	for (const auto& t : m_creationOrder)
 	{
@@ -156,15 +141,7 @@ TCellBounds CTiledOccupancyGrid::observedBounds() const
 			{
 				if (!tile.observed({lx, ly})) continue;
 				const TGlobalCell g = m_geometry.globalCellOf(t, {lx, ly});
-				if (!any)
-				{
-					b = {g.gx, g.gx, g.gy, g.gy};
-					any = true;
-				}
-				b.gxMin = std::min(b.gxMin, g.gx);
-				b.gxMax = std::max(b.gxMax, g.gx);
-				b.gyMin = std::min(b.gyMin, g.gy);
-				b.gyMax = std::max(b.gyMax, g.gy);
+				b.include({g.gx, g.gx, g.gy, g.gy});
 			}
 	}
 	return b;

@@ -24,6 +24,7 @@
 
 #include <mrpt/math/TPoint2D.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <functional>
@@ -67,6 +68,20 @@ struct TCellBounds
 	bool empty() const { return gxMax < gxMin || gyMax < gyMin; }
 	int width() const { return empty() ? 0 : gxMax - gxMin + 1; }
 	int height() const { return empty() ? 0 : gyMax - gyMin + 1; }
+	/** Grows to the union with `o` (an empty box takes `o` as it is). */
+	void include(const TCellBounds& o)
+	{
+		if (o.empty()) return;
+		if (empty())
+		{
+			*this = o;
+			return;
+		}
+		gxMin = std::min(gxMin, o.gxMin);
+		gxMax = std::max(gxMax, o.gxMax);
+		gyMin = std::min(gyMin, o.gyMin);
+		gyMax = std::max(gyMax, o.gyMax);
+	}
 };
 
 class CTiledGridGeometry
