@@ -68,12 +68,6 @@ std::string errorOf(const hslam::testing::CTempDir& dir, const std::string& text
 	return {};
 }
 
-void expectPose(const mrpt::poses::CPose2D& actual, const TPose2D& expected)
-{
-	EXPECT_NEAR(actual.x(), expected.x, 1e-9);
-	EXPECT_NEAR(actual.y(), expected.y, 1e-9);
-	EXPECT_NEAR(std::remainder(actual.phi() - expected.phi, 2 * M_PI), 0.0, 1e-9);
-}
 }  // namespace
 
 TEST(CarmenImport, AnchoredIncrementsReadBackFromTheRawlog)

@@ -5,18 +5,9 @@
 #include "carmen_test_utils.h"
 
 using hslam::io::CCarmenOdometryTracker;
+using hslam::testing::carmen::expectPose;
 using hslam::testing::carmen::handIncrement;
 using mrpt::math::TPose2D;
-
-namespace
-{
-void expectPose(const mrpt::poses::CPose2D& actual, const TPose2D& expected)
-{
-	EXPECT_NEAR(actual.x(), expected.x, 1e-9);
-	EXPECT_NEAR(actual.y(), expected.y, 1e-9);
-	EXPECT_NEAR(std::remainder(actual.phi() - expected.phi, 2 * M_PI), 0.0, 1e-9);
-}
-}  // namespace
 
 TEST(CarmenOdometryTracker, AnchoredIncrementsInFileOrder)
 {

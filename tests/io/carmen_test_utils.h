@@ -9,6 +9,7 @@
 #include <mrpt/obs/CObservationComment.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/obs/CRawlog.h>
+#include <mrpt/poses/CPose2D.h>
 #include <mrpt/serialization/CArchive.h>
 #include <zlib.h>
 
@@ -111,6 +112,14 @@ inline mrpt::math::TPose2D handIncrement(const mrpt::math::TPose2D& a, const mrp
 inline double beamAngle_deg(const mrpt::obs::CObservation2DRangeScan& scan, size_t i)
 {
 	return (scan.sensorPose.yaw() + scan.getScanAngle(i)) * 180.0 / M_PI;
+}
+
+/** Pose equality to 1e-9 (angles compared modulo 2 pi). */
+inline void expectPose(const mrpt::poses::CPose2D& actual, const mrpt::math::TPose2D& expected)
+{
+	EXPECT_NEAR(actual.x(), expected.x, 1e-9);
+	EXPECT_NEAR(actual.y(), expected.y, 1e-9);
+	EXPECT_NEAR(std::remainder(actual.phi() - expected.phi, 2 * M_PI), 0.0, 1e-9);
 }
 
 }  // namespace hslam::testing::carmen
