@@ -1,0 +1,35 @@
+/* hslam: one interface for the three laser line extractors compared in thesis
+ * Table 3 (4.4.2 i derivative segmentation, 4.4.3 i iterative end point fit /
+ * split-and-merge, 4.4.3 ii RANSAC via MRPT), so that `[line_extraction]
+ * method` in the INI selects any of them. */
+#pragma once
+
+#include <hslam/features/line_segment.h>
+#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
+#include <memory>
+#include <string>
+
+namespace hslam::features
+{
+class CLineExtractor
+{
+   public:
+	virtual ~CLineExtractor() = default;
+	/** "derivative", "iep" or "ransac". */
+	virtual std::string name() const = 0;
+	/** Lines of one scan, in the robot frame (the scan's sensorPose applied),
+	 * ordered by first_beam. Invalid beams (validity flag off, NaN, <= 0, or
+	 * at/after the scanner's maxRange) are never part of a line. */
+	virtual TLineSegmentList extract(const mrpt::obs::CObservation2DRangeScan& scan) const = 0;
+};
+
+/** Builds the extractor named `method` with its options read from INI section
+ * `section` of `cfg` (unknown keys and out-of-range values throw
+ * hslam::common::config_error). */
+std::unique_ptr<CLineExtractor> createLineExtractor(const std::string& method,
+													 const mrpt::config::CConfigFileBase& cfg,
+													 const std::string& section);
+
+}  // namespace hslam::features
