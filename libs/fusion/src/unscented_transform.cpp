@@ -72,7 +72,8 @@ Eigen::VectorXd poseVectorMean(const Eigen::MatrixXd& columns, const Eigen::Vect
 }
 
 TTransformed unscentedTransform(const TSigmaPoints& sigma, const Eigen::VectorXd& inputMean, Eigen::Index crossRows,
-								const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& f)
+								const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& f,
+								const Eigen::VectorXd* centre)
 {
 	const Eigen::Index count = sigma.points.cols();
 	Eigen::MatrixXd outputs;
@@ -83,7 +84,7 @@ TTransformed unscentedTransform(const TSigmaPoints& sigma, const Eigen::VectorXd
 		outputs.col(k) = y;
 	}
 	TTransformed t;
-	t.mean = poseVectorMean(outputs, sigma.meanWeights);
+	t.mean = centre ? *centre : poseVectorMean(outputs, sigma.meanWeights);
 	t.cov = Eigen::MatrixXd::Zero(outputs.rows(), outputs.rows());
 	t.crossCov = Eigen::MatrixXd::Zero(crossRows, outputs.rows());
 	for (Eigen::Index k = 0; k < count; ++k)

@@ -40,8 +40,11 @@ TPointTranslationResult estimatePointTranslation(const mrpt::maps::CSimplePoints
 		r.inliers = inliers;
 		r.rms_m = std::sqrt(sq / inliers);
 	}
-	const double var = std::max(r.rms_m * r.rms_m, 1e-4);  // at least 1 cm
-	r.covariance = Eigen::Matrix2d::Identity() * var / std::max<size_t>(1, r.inliers / 10);
+	const double var = r.rms_m * r.rms_m;
+	// Neighbouring laser points are strongly correlated and translation-only
+	// association can lock onto a wrong wall, so the covariance is not divided
+	// by the number of points: the RMS residual itself (at least 5 cm) is the std.
+	r.covariance = Eigen::Matrix2d::Identity() * std::max(var, 0.05 * 0.05);
 	return r;
 }
 

@@ -128,7 +128,10 @@ mrpt::img::CImage renderScanDebugImage(const mrpt::obs::CObservation2DRangeScan&
 	std::snprintf(caption, sizeof(caption), "%zu lines  match: %s %s%s  NIS %.2f  1 grid = 1 m", estimate.lines.size(),
 				  estimate.matched ? estimate.match_method.c_str() : "-",
 				  estimate.matched ? matching::toString(estimate.match_quality) : "",
-				  estimate.matched && !estimate.match_accepted ? " (rejected)" : "", estimate.match_nis);
+				  estimate.matched && !estimate.match_accepted && estimate.match_quality != matching::EMatchQuality::failed
+					  ? " (rejected)"
+					  : "",
+				  estimate.match_nis);
 	img.textOut(6, 6, caption, kAxes);
 	return img;
 }

@@ -13,7 +13,9 @@
  * lambda = alpha^2 (n + kappa) - n (eq. 74), weights of eq. 75-77 with
  * beta = 2 for Gaussians. Angles are wrapped in every difference and averaged
  * on the circle, which solves the quadrant problem of thesis figure 113
- * without the +180 deg patch. After every step the covariance is symmetrised
+ * without the +180 deg patch. Prediction keeps the noise-free composition
+ * as the mean (see CPoseUKF.cpp: the sigma-point mean is biased towards the
+ * centre of the arc when the heading is uncertain). After every step the covariance is symmetrised
  * and its eigenvalues floored so it stays positive definite. */
 #pragma once
 

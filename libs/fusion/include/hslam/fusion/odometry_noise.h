@@ -29,10 +29,13 @@ struct TOdometryNoiseOptions
 	std::string model = "proportional";  //!< "proportional", "thesis" or "fixed"
 	// proportional model: sigma_xy = xy_per_m * d + xy_per_rad * a + min_xy
 	//                     sigma_th = th_per_m * d + th_per_rad * a + min_th
-	double xy_std_per_m = 0.05;  //!< m of position error per m travelled
+	// Defaults cover the worst of the real Pioneer logs (csail: 10-20 deg heading
+	// errors over 45 deg turns); a too-small odometry covariance makes the UKF
+	// distrust correct scan matches.
+	double xy_std_per_m = 0.1;  //!< m of position error per m travelled
 	double xy_std_per_rad = 0.02;  //!< m of position error per rad turned
-	double theta_std_per_m_rad = 0.035;  //!< rad of heading error per m travelled (2 deg/m)
-	double theta_std_per_rad = 0.05;  //!< rad of heading error per rad turned
+	double theta_std_per_m_rad = 0.05;  //!< rad of heading error per m travelled (~3 deg/m)
+	double theta_std_per_rad = 0.2;  //!< rad of heading error per rad turned
 	double min_xy_std_m = 0.002;
 	double min_theta_std_rad = 0.002;
 	// fixed model: the increment size the thesis evaluated eq. 78-80 at

@@ -38,8 +38,11 @@ struct TTransformed
 };
 
 /** Propagates sigma points through f and returns the outputs' mean,
- * covariance and cross-covariance with the first crossRows inputs. */
+ * covariance and cross-covariance with the first crossRows inputs. If
+ * `centre` is given, it is used as the output mean (and the covariances are
+ * taken around it) instead of the sigma points' weighted mean. */
 TTransformed unscentedTransform(const TSigmaPoints& sigma, const Eigen::VectorXd& inputMean, Eigen::Index crossRows,
-								const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& f);
+								const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& f,
+								const Eigen::VectorXd* centre = nullptr);
 
 }  // namespace hslam::fusion

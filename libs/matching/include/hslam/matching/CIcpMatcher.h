@@ -3,6 +3,14 @@
  * work (4.5.5, 5.2): used when the line matcher is weak (corridors, clutter)
  * or always, seeded by the line (or odometry) estimate.
  *
+ * Multi-start: ICP only converges from seeds inside its basin; a heading
+ * error of 10-20 deg (seen on real logs after sharp turns) is outside it. When
+ * the first result pairs fewer than restart_below_goodness of the points, ICP
+ * is restarted from seeds rotated by +-1 and +-2 steps (step = the seed's
+ * heading standard deviation, clamped to [restart_min_step, restart_max_step])
+ * and, among the results paired nearly as well as the best, the one closest
+ * to the prior (Mahalanobis distance) is kept.
+ *
  * MRPT's ICP covariance is computed from the point residuals and is usually
  * overconfident on laser data; it is floored here and further adapted online
  * by fusion::CAdaptiveMeasurementNoise. */
@@ -31,6 +39,10 @@ class CIcpMatcher
 		int decimation = 1;  //!< use every k-th point of the scan (MRPT corresponding_points_decimation)
 		double min_goodness = 0.5;  //!< below: weak match (fraction of points paired at the end)
 		double fail_goodness = 0.2;  //!< below: failed
+		double restart_below_goodness = 0.7;  //!< multi-start when the first goodness is lower; 0 = never
+		double restart_goodness_tolerance = 0.05;  //!< results this close to the best goodness compete on prior distance
+		double restart_min_step_rad = 3.0 * M_PI / 180.0;
+		double restart_max_step_rad = 15.0 * M_PI / 180.0;
 		double min_xy_std_m = 0.02;  //!< covariance floor (laser noise, map blur)
 		double min_theta_std_rad = 0.5 * M_PI / 180.0;
 
@@ -47,6 +59,10 @@ class CIcpMatcher
 			v.integer("decimation", decimation, 1, 100);
 			v.real("min_goodness", min_goodness, 0.0, 1.0);
 			v.real("fail_goodness", fail_goodness, 0.0, 1.0);
+			v.real("restart_below_goodness", restart_below_goodness, 0.0, 1.0);
+			v.real("restart_goodness_tolerance", restart_goodness_tolerance, 0.0, 1.0);
+			v.degrees("restart_min_step_deg", restart_min_step_rad, 0.1, 90.0);
+			v.degrees("restart_max_step_deg", restart_max_step_rad, 0.1, 90.0);
 			v.real("min_xy_std_m", min_xy_std_m, 1e-4, 1.0);
 			v.degrees("min_theta_std_deg", min_theta_std_rad, 0.001, 10.0);
 		}
@@ -63,6 +79,9 @@ class CIcpMatcher
 	const TOptions& options() const { return m_options; }
 
    private:
+	TPoseMatch alignOnce(const mrpt::maps::CSimplePointsMap& reference, const mrpt::maps::CSimplePointsMap& current,
+						 const mrpt::poses::CPose2D& seed, const Eigen::Matrix3d& seedCov) const;
+
 	TOptions m_options;
 };
 

@@ -52,7 +52,7 @@ struct TPoseEstimationOptions
 	std::string method = "lines+icp";  //!< "odometry", "lines", "icp" or "lines+icp"
 	double match_every_m = 0.1;  //!< run the matcher after this much travel (thesis 4.5.3: 0.1 m)...
 	double match_every_rad = 5.0 * M_PI / 180.0;  //!< ...or this much rotation (thesis: 5 deg)
-	bool icp_always = false;  //!< lines+icp: refine every match with ICP, not only weak ones
+	bool icp_always = true;  //!< lines+icp: refine every match with ICP (false: only weak/failed line matches)
 
 	template <class V>
 	void visit(V& v)

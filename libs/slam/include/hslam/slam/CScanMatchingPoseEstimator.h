@@ -56,7 +56,11 @@ struct TUkfSectionOptions
 {
 	fusion::CPoseUKF::TOptions filter;
 	fusion::CAdaptiveMeasurementNoise::TOptions adaptation;
-	double gate_nis = 16.27;  //!< reject a match whose NIS exceeds this (chi-square 3 dof, 99.9 %)
+	/** Reject a match whose NIS exceeds this. 50 (chi-square 3 dof tail ~1e-10)
+	 * rejects only gross mismatches: the textbook 16.3 (99.9 %) also rejected
+	 * correct ICP corrections after the 10-20 deg odometry heading errors of
+	 * real logs and let the estimate drift (measured: csail ATE 3.8 m vs 0.96 m). */
+	double gate_nis = 50.0;
 	double unknown_motion_xy_std_m = 1.0;  //!< odometry gap: std of the unknown translation
 	double unknown_motion_theta_std_rad = 30.0 * M_PI / 180.0;  //!< odometry gap: std of the unknown rotation
 
