@@ -65,7 +65,11 @@ TUkfUpdateResult CPoseUKF::update(const TPoseVec& z, const Eigen::Matrix3d& R, d
 {
 	const Eigen::Index n = m_x.size();
 	const auto sigma = makeSigmaPoints(m_x, m_P, {m_options.alpha, m_options.beta, m_options.kappa});
-	const auto t = unscentedTransform(sigma, m_x, n, h);
+	// Predicted measurement: h at the mean, for the same reason as in predict()
+	// (the sigma-point mean of a relative pose shrinks when headings are
+	// uncertain); S and Pxz come from the sigma points around it.
+	const Eigen::VectorXd predicted = h(m_x);
+	const auto t = unscentedTransform(sigma, m_x, n, h, &predicted);
 	const Eigen::Matrix3d S = t.cov + R;
 	TUkfUpdateResult result;
 	result.innovation = poseVectorDifference(z, t.mean);
