@@ -6,6 +6,7 @@
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -166,6 +167,27 @@ void parsePerson(TScene& scene, const std::vector<std::string>& words, const CLi
 	}
 	scene.people.push_back(p);
 }
+/** A convex corner of one chain that touches a wall of another chain (a box
+ * pushed against a room wall) is seen from free space as an inside corner:
+ * its free opening is the convex opening minus the 180 deg of the wall. */
+void classifyJunctions(TScene& scene)
+{
+	for (auto& c : scene.corners)
+	{
+		if (c.kind != ECornerKind::convex) continue;
+		for (const auto& s : scene.world.segments())
+		{
+			if (s.tag.group == c.chain) continue;
+			const double ex = s.b.x - s.a.x, ey = s.b.y - s.a.y, len2 = ex * ex + ey * ey;
+			if (len2 <= 0) continue;
+			const double u = std::clamp(((c.point.x - s.a.x) * ex + (c.point.y - s.a.y) * ey) / len2, 0.0, 1.0);
+			if (std::hypot(c.point.x - (s.a.x + u * ex), c.point.y - (s.a.y + u * ey)) > 1e-3) continue;
+			c.kind = ECornerKind::concave;
+			c.free_angle_deg -= 180.0;
+			break;
+		}
+	}
+}
 }  // namespace
 
 TScene parseSceneText(const std::string& text, const std::string& name)
@@ -238,6 +260,7 @@ TScene parseSceneText(const std::string& text, const std::string& name)
 			err.fail("unknown item '" + kind +
 					 "' (expected wall, polyline, room, box, circle, chair, table or person)");
 	}
+	classifyJunctions(scene);
 	return scene;
 }
 
