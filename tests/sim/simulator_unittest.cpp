@@ -74,6 +74,25 @@ TEST(SimSimulator, VelocityScriptGivesStraightTruthAndSensorRates)
 	EXPECT_NEAR(sink.scanFrames[10].t_s - sink.scanFrames[9].t_s, 0.2, 1e-6);  // UNIX-time doubles
 }
 
+TEST(SimSimulator, SensorSettingsDoNotChangeTheTruePath)
+{
+	auto finalPose = [](double laserNoise, bool sonar) {
+		TSimulatorConfig cfg;
+		cfg.path.mode = "velocity";
+		cfg.path.commands = "5 0.4 10; 5 0.4 -10";
+		cfg.robot.kinematics.wheel_noise_m_per_sqrt_m = 0.01;
+		cfg.laser.noise_std_m = laserNoise;
+		cfg.sonar.enabled = sonar;
+		CSimulator sim(cfg, parseSceneText("room -5 -5 5 -5 5 5 -5 5\n", "box"));
+		ISimulationSink ignore;
+		sim.run(ignore);
+		return sim.robot().truePose();
+	};
+	const auto a = finalPose(0.01, true), b = finalPose(0.05, false);
+	EXPECT_EQ(a.x, b.x);
+	EXPECT_EQ(a.phi, b.phi);
+}
+
 TEST(SimSimulator, ConfigErrorsNameSectionAndKey)
 {
 	mrpt::config::CConfigFileMemory cfg;
@@ -143,6 +162,31 @@ TEST(SimApp, OutputsAreReadableByMrptAndOurReaders)
 	EXPECT_GT(grid.getPos(5.0, 4.0), 0.5f);  // middle free
 	// Corners: the lab room has 4 concave room corners among them.
 	EXPECT_NE(readFile(dir.file("o/corners.csv")).find("0,0.0000,0.0000,concave,90.0"), std::string::npos);
+}
+
+TEST(SimApp, UmbmarkLapEndsAtTheOdometryStartButNotInTruth)
+{
+	hslam::testing::CTempDir dir;
+	ASSERT_EQ(simulate(sampleIni("umbmark"), dir.file("u"), "--set 'path.waypoints=4 0; 4 -4; 0 -4; 0 0'"), 0)
+		<< readFile(dir.file("u.log"));
+	std::ifstream f(dir.file("u/waypoints.csv"));
+	std::vector<std::vector<double>> rows;
+	std::string line;
+	std::getline(f, line);  // header
+	while (std::getline(f, line))
+	{
+		std::vector<double> v;
+		std::stringstream ss(line);
+		for (std::string cell; std::getline(ss, cell, ',');) v.push_back(std::stod(cell));
+		rows.push_back(v);
+	}
+	ASSERT_EQ(rows.size(), 4u);
+	const auto& end = rows.back();  // waypoint,t,true x,y,yaw,odometry x,y,yaw
+	EXPECT_LT(std::hypot(end[5], end[6]), 0.03);  // odometry believes it is back
+	const double trueError = std::hypot(end[2], end[3]);
+	// Ed = 1.001, Eb = 1.004 over a 16 m clockwise lap: the errors add up to decimetres.
+	EXPECT_GT(trueError, 0.1);
+	EXPECT_LT(trueError, 1.0);
 }
 
 TEST(SimApp, BadConfigAndSceneGiveClearErrors)
