@@ -189,6 +189,44 @@ TEST(SimApp, UmbmarkLapEndsAtTheOdometryStartButNotInTruth)
 	EXPECT_LT(trueError, 1.0);
 }
 
+TEST(SimApp, GridmapWorldGivesTheSameWallsAsTheScene)
+{
+	// Simulate in a scene of walls, then again in its own ground-truth
+	// .gridmap: the laser ranges agree within a cell.
+	hslam::testing::CTempDir dir;
+	std::ofstream(dir.file("walls.scene")) << "room 0 0 10 0 10 8 0 8\nbox 6 4 1 2 20\nwall 3 6 5 7\n";
+	const std::string noNoise = "--set simulation.duration_s=0.05 --set laser.noise_std_m=0 ";
+	ASSERT_EQ(simulate(sampleIni("lab"), dir.file("scene"), noNoise + "--set world.scene_file=" + dir.file("walls.scene")),
+			  0)
+		<< readFile(dir.file("scene.log"));
+	ASSERT_EQ(simulate(sampleIni("lab"), dir.file("grid"),
+					   noNoise + "--set world.scene_file= --set world.gridmap_file=" + dir.file("scene/gt_map.gridmap.gz")),
+			  0)
+		<< readFile(dir.file("grid.log"));
+	auto firstScan = [&](const std::string& rawlog) {
+		hslam::io::CRawlogReader reader(rawlog);
+		hslam::io::TRawlogEntry entry;
+		while (reader.next(entry))
+			if (auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(entry.observation))
+				return scan;
+		return mrpt::obs::CObservation2DRangeScan::Ptr();
+	};
+	const auto a = firstScan(dir.file("scene/sim.rawlog")), b = firstScan(dir.file("grid/sim.rawlog"));
+	ASSERT_TRUE(a && b);
+	ASSERT_EQ(a->getScanSize(), b->getScanSize());
+	int compared = 0, agreed = 0;
+	for (size_t i = 0; i < a->getScanSize(); ++i)
+	{
+		if (!a->getScanRangeValidity(i) || !b->getScanRangeValidity(i)) continue;
+		++compared;
+		// 5 cm cells are fatter than the zero-thickness walls: a beam grazing a
+		// wall's free end may hit its cell.
+		if (std::abs(a->getScanRange(i) - b->getScanRange(i)) < 0.1) ++agreed;
+	}
+	EXPECT_GT(compared, 120);
+	EXPECT_GE(agreed, compared - 2);
+}
+
 TEST(SimApp, BadConfigAndSceneGiveClearErrors)
 {
 	hslam::testing::CTempDir dir;
