@@ -93,6 +93,20 @@ TEST(SimSimulator, SensorSettingsDoNotChangeTheTruePath)
 	EXPECT_EQ(a.phi, b.phi);
 }
 
+TEST(SimSimulator, ExternalCommandsDriveTheRobot)
+{
+	TSimulatorConfig cfg;
+	cfg.path.mode = "external";
+	cfg.robot.kinematics.max_rot_accel_rad_s2 = 0;
+	CSimulator sim(cfg, parseSceneText("room -5 -5 5 -5 5 5 -5 5\n", "box"));
+	TCountingSink sink;
+	sim.setExternalCommand(TVelocityCommand{0.0, M_PI / 10});  // 18 deg/s
+	for (int k = 0; k < 500; ++k) sim.step(sink);  // 5 s
+	EXPECT_FALSE(sim.done());
+	EXPECT_NEAR(sim.robot().truePose().phi, M_PI / 2, 1e-9);
+	EXPECT_EQ(sink.scans, 50u);
+}
+
 TEST(SimSimulator, ConfigErrorsNameSectionAndKey)
 {
 	mrpt::config::CConfigFileMemory cfg;
