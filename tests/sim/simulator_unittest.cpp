@@ -241,6 +241,21 @@ TEST(SimApp, GridmapWorldGivesTheSameWallsAsTheScene)
 	EXPECT_GE(agreed, compared - 2);
 }
 
+TEST(SimApp, CommittedSamplesAreRegeneratedBitForBit)
+{
+	// rawlog_samples/ must be what scripts/make-samples.sh produces from
+	// config_ini/sim-*.ini; if the simulator changed on purpose, rerun that script.
+	hslam::testing::CTempDir dir;
+	for (const std::string name : {"lab", "floor"})
+	{
+		ASSERT_EQ(simulate(sampleIni(name), dir.file(name), ""), 0) << readFile(dir.file(name + ".log"));
+		const std::string committed = std::string(HSLAM_SOURCE_DIR) + "/rawlog_samples/" + name + "/";
+		for (const char* f : {"sim.rawlog", "ground_truth.tum", "corners.csv", "waypoints.csv"})
+			EXPECT_TRUE(readFile(dir.file(name + "/" + f)) == readFile(committed + f))
+				<< name << "/" << f << " differs from the committed sample: run scripts/make-samples.sh";
+	}
+}
+
 TEST(SimApp, BadConfigAndSceneGiveClearErrors)
 {
 	hslam::testing::CTempDir dir;
