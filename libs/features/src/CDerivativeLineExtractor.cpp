@@ -109,10 +109,15 @@ TLineSegmentList CDerivativeLineExtractor::extract(const mrpt::obs::CObservation
 	TMergeRule rule;
 	rule.max_angle_rad = m_options.merge_angle_rad;
 	rule.max_rms_growth = m_options.merge_rms_growth;
+	rule.max_rms_m = m_options.max_fit_rms_m;
 	rule.max_gap_ratio = m_options.gap_ratio;
 	mergeCollinearNeighbours(points, ranges, rule);
 	refineBoundaries(points, ranges);
-	return segmentsFromRanges(points, ranges, static_cast<size_t>(m_options.min_points), m_options.min_length_m);
+	TLineSegmentList lines =
+		segmentsFromRanges(points, ranges, static_cast<size_t>(m_options.min_points), m_options.min_length_m,
+						   m_options.max_fit_rms_m);
+	markOccludedEnds(scan, lines);
+	return lines;
 }
 
 }  // namespace hslam::features

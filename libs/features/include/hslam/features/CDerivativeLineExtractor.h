@@ -23,7 +23,8 @@
  *     second, aa the gap between them, i.e. a real gap must exceed 5 % of
  *     their combined length.
  *  5. Each piece is fitted by TLS (line_fit.h, eq. 57-64); pieces with fewer
- *     than min_points points or shorter than min_length_m are dropped.
+ *     than min_points points, shorter than min_length_m or with a fit RMS
+ *     above max_fit_rms_m (clutter, not a wall) are dropped.
  *
  * Deviations (each because the literal method fails on real scans):
  *  - Normalising by the single largest peak lets one large depth jump (a door
@@ -41,7 +42,7 @@
  *    Euclidean lengths and the gap aa counted beyond the normal point spacing
  *    (segment_ops.h gapCriterion), plus a collinearity check: the merged
  *    fit's RMS must stay below merge_rms_growth times the pieces' own RMS
- *    + 5 mm (two parallel walls 10 cm apart pass the 10 deg test and eq. 56,
+ *    + 5 mm and below max_fit_rms_m (two parallel walls 10 cm apart pass the 10 deg test and eq. 56,
  *    but are not one line; a noisy wall's pieces are). The 10 deg test is
  *    only applied between pieces of >= 5 points: the direction of a 3-point
  *    piece under 1 cm noise is uncertain by more than 10 deg.
@@ -72,6 +73,7 @@ class CDerivativeLineExtractor : public CLineExtractor
 		double gap_ratio = 1.05;  //!< noise filter 2, eq. 56 (thesis 1.05)
 		double split_distance_m = 0.05;  //!< IEP guard split of the pieces, chord distance (not in the thesis)
 		double merge_rms_growth = 2.0;  //!< collinearity test of the merge (segment_ops.h TMergeRule)
+		double max_fit_rms_m = 0.04;  //!< no merge may produce, and no line may have, a larger fit RMS
 		int min_points = 5;  //!< points per line
 		double min_length_m = 0.2;  //!< line length
 
@@ -85,6 +87,7 @@ class CDerivativeLineExtractor : public CLineExtractor
 			v.real("gap_ratio", gap_ratio, 1.0, 10.0);
 			v.real("split_distance_m", split_distance_m, 0.001, 1.0);
 			v.real("merge_rms_growth", merge_rms_growth, 1.0, 100.0);
+			v.real("max_fit_rms_m", max_fit_rms_m, 0.001, 1.0);
 			v.integer("min_points", min_points, 2, 10000);
 			v.real("min_length_m", min_length_m, 0.0, 100.0);
 		}
