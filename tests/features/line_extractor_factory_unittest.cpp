@@ -6,6 +6,10 @@
 #include <hslam/features/CDerivativeLineExtractor.h>
 #include <hslam/features/CIepLineExtractor.h>
 #include <hslam/features/CRansacLineExtractor.h>
+#include <hslam/testing/test_paths.h>
+#include <mrpt/config/CConfigFile.h>
+
+#include <algorithm>
 
 using namespace hslam::features;
 using hslam::common::config_error;
@@ -108,4 +112,28 @@ TEST(LineExtractorFactory, SavedOptionsLoadBackIdentically)
 	hslam::common::loadOptions(back, cfg, "line_extraction_iep");
 	EXPECT_DOUBLE_EQ(back.split_distance_m, 0.07);
 	EXPECT_NEAR(back.merge_angle_rad, 0.1, 1e-9);
+}
+
+TEST(LineExtractorFactory, DocumentedIniListsEveryKeyWithItsDefault)
+{
+	const mrpt::config::CConfigFile file(std::string(HSLAM_SOURCE_DIR) + "/config_ini/line_extraction.ini");
+	EXPECT_EQ(file.read_string("line_extraction", "method", ""), "derivative");
+	auto compare = [&](auto defaults, const std::string& section) {
+		mrpt::config::CConfigFileMemory saved;
+		hslam::common::saveOptions(defaults, saved, section);
+		std::vector<std::string> savedKeys, fileKeys;
+		saved.getAllKeys(section, savedKeys);
+		file.getAllKeys(section, fileKeys);
+		std::sort(savedKeys.begin(), savedKeys.end());
+		std::sort(fileKeys.begin(), fileKeys.end());
+		EXPECT_EQ(savedKeys, fileKeys) << section;
+		for (const auto& k : savedKeys)
+			EXPECT_NEAR(saved.read_double(section, k, -1), file.read_double(section, k, -2), 1e-9)
+				<< "[" << section << "] " << k;
+		// and the file loads without error
+		EXPECT_NO_THROW(createLineExtractor(section.substr(std::string("line_extraction_").size()), file, section));
+	};
+	compare(CDerivativeLineExtractor::TOptions(), "line_extraction_derivative");
+	compare(CIepLineExtractor::TOptions(), "line_extraction_iep");
+	compare(CRansacLineExtractor::TOptions(), "line_extraction_ransac");
 }
