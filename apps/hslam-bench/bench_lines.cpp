@@ -12,7 +12,9 @@
  * and the time. CARMEN logs (*.log, *.log.gz) are converted to a temporary
  * rawlog with the foundation importer; other files are read as rawlogs.
  * Time per scan = best of `repetitions` runs over all scans, divided by the
- * scan count. MRPT's RANSAC uses MRPT's global random generator, seeded here. */
+ * scan count. MRPT's RANSAC uses MRPT's global random generator, seeded here.
+ * The extra row "deriv-thesis" runs the derivative method with the thesis'
+ * own settings where ours deviate (see CDerivativeLineExtractor.h). */
 #include "bench_common.h"
 
 #include <hslam/common/options_io.h>
@@ -60,16 +62,29 @@ void accumulate(features::TLineScore& total, const features::TLineScore& s)
 	total.max_endpoint_error_m = std::max(total.max_endpoint_error_m, s.max_endpoint_error_m);
 }
 
-std::vector<std::unique_ptr<CLineExtractor>> defaultExtractors()
+struct TNamedExtractor
+{
+	std::string label;
+	std::unique_ptr<CLineExtractor> extractor;
+};
+
+/** The three methods with default options, then "deriv-thesis": the
+ * derivative method with the thesis' settings where ours deviate (step 1, no
+ * absolute peak floor, guard split / RMS limits effectively off). */
+std::vector<TNamedExtractor> benchExtractors()
 {
 	const mrpt::config::CConfigFileMemory empty;
-	std::vector<std::unique_ptr<CLineExtractor>> out;
+	std::vector<TNamedExtractor> out;
 	for (const auto& m : features::lineExtractorMethods())
-		out.push_back(features::createLineExtractor(m, empty, features::lineExtractorSection(m)));
+		out.push_back({m, features::createLineExtractor(m, empty, features::lineExtractorSection(m))});
+	const mrpt::config::CConfigFileMemory thesis(std::string(
+		"[d]\nderivative_step_beams = 1\nmin_peak = 0\nsplit_distance_m = 1\nmerge_rms_growth = 100\n"
+		"max_fit_rms_m = 1\n"));
+	out.push_back({"deriv-thesis", features::createLineExtractor("derivative", thesis, "d")});
 	return out;
 }
 
-std::vector<TSyntheticRow> runSynthetic(const std::vector<std::unique_ptr<CLineExtractor>>& extractors, int repetitions)
+std::vector<TSyntheticRow> runSynthetic(const std::vector<TNamedExtractor>& extractors, int repetitions)
 {
 	std::vector<TSyntheticRow> rows;
 	std::mt19937 rng(42);
@@ -82,9 +97,9 @@ std::vector<TSyntheticRow> runSynthetic(const std::vector<std::unique_ptr<CLineE
 			const mrpt::poses::CPose2D pose(0.1 * jitter(rng), 0.1 * jitter(rng), 3.0 * M_PI / 180 * jitter(rng));
 			sims.push_back(features::simulateScan(scene.walls, pose, {}, static_cast<uint32_t>(1000 + t)));
 		}
-		for (const auto& ex : extractors)
+		for (const auto& [label, ex] : extractors)
 		{
-			TSyntheticRow row{scene.name, ex->name(), {}, 0};
+			TSyntheticRow row{scene.name, label, {}, 0};
 			mrpt::random::getRandomGenerator().randomize(1234);
 			for (const auto& sim : sims)
 				accumulate(row.total, features::scoreLines(features::visibleWalls(sim, 5, 0.2), ex->extract(sim.scan)));
@@ -198,7 +213,7 @@ struct TRealRow
 	TRepeatability repeat;
 };
 
-std::vector<TRealRow> runReal(const std::vector<std::unique_ptr<CLineExtractor>>& extractors,
+std::vector<TRealRow> runReal(const std::vector<TNamedExtractor>& extractors,
 							  const std::vector<std::string>& logs, int repetitions)
 {
 	std::vector<TRealRow> rows;
@@ -211,11 +226,11 @@ std::vector<TRealRow> runReal(const std::vector<std::unique_ptr<CLineExtractor>>
 		}
 		const TRealLog data = loadScans(log);
 		const auto& scans = data.scans;
-		for (const auto& ex : extractors)
+		for (const auto& [label, ex] : extractors)
 		{
 			TRealRow row;
 			row.log = fs::path(log).filename().string();
-			row.method = ex->name();
+			row.method = label;
 			row.scans = scans.size();
 			mrpt::random::getRandomGenerator().randomize(1234);
 			TLineSegmentList previous;
@@ -258,7 +273,7 @@ std::vector<std::string> defaultLogs()
 
 int runLinesSuite(const std::vector<std::string>& inputs, int repetitions)
 {
-	const auto extractors = defaultExtractors();
+	const auto extractors = benchExtractors();
 	const auto synthetic = runSynthetic(extractors, repetitions);
 	std::cout << "Suite lines: line extraction, thesis table 3 environments (" << kTrials
 			  << " noisy views each, sigma " << kSigma_m * 100 << " cm, noisy wall " << kNoisySigma_m * 100
@@ -321,9 +336,8 @@ int runLinesSuite(const std::vector<std::string>& inputs, int repetitions)
 		}
 	}
 	std::cout << std::defaultfloat << std::setprecision(6) << "\n";
-	for (const auto& ex : extractors)
+	for (const auto& m : features::lineExtractorMethods())
 	{
-		const std::string m = ex->name();
 		const auto& p = pooled[m];
 		std::cout << "lines_f1_" << m << "=" << p.f1() << "\nlines_recall_" << m << "=" << p.recall()
 				  << "\nlines_fp_per_scan_" << m << "=" << p.false_positives / (3.0 * kTrials) << "\nlines_endpoint_mm_"
