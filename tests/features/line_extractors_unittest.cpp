@@ -6,10 +6,12 @@
 #include <gtest/gtest.h>
 #include <hslam/features/line_scenes.h>
 #include <hslam/features/line_scoring.h>
+#include <hslam/features/scan_points.h>
 #include <mrpt/poses/CPose3D.h>
 
 #include <cmath>
 #include <limits>
+#include <random>
 #include <set>
 
 using namespace hslam::features;
@@ -265,4 +267,40 @@ TEST_P(AllExtractors, ThesisTable3Scenes)
 	EXPECT_GE(total.f1(), minF1) << GetParam() << " found " << total.found << "/" << total.truth << " of "
 								 << total.extracted;
 	EXPECT_EQ(total.truth, 10u * (10 + 2 + 3));
+}
+
+TEST_P(AllExtractors, GarbageScansNeverCrashAndGiveSaneLines)
+{
+	const auto ex = defaultExtractor(GetParam());
+	std::mt19937 rng(11);
+	std::uniform_real_distribution<float> range(-2.0f, 12.0f);
+	std::uniform_int_distribution<int> kind(0, 9);
+	for (int trial = 0; trial < 30; ++trial)
+	{
+		mrpt::obs::CObservation2DRangeScan scan;
+		const size_t n = static_cast<size_t>(1 + trial * 13);  // 1 .. 378 beams
+		scan.resizeScan(n);
+		scan.aperture = static_cast<float>(M_PI);
+		scan.maxRange = 10.0f;
+		for (size_t i = 0; i < n; ++i)
+		{
+			const int k = kind(rng);
+			const float r = k == 0   ? std::numeric_limits<float>::quiet_NaN()
+							: k == 1 ? std::numeric_limits<float>::infinity()
+							: k == 2 ? 0.0f
+							: k <= 5 ? 3.0f  // runs of equal ranges: arcs, identical-looking points
+									 : range(rng);
+			scan.setScanRange(i, r);
+			scan.setScanRangeValidity(i, kind(rng) != 0);
+		}
+		TLineSegmentList lines;
+		ASSERT_NO_THROW(lines = ex->extract(scan)) << GetParam() << " trial " << trial;
+		for (const auto& l : lines)
+		{
+			EXPECT_TRUE(std::isfinite(l.rho_m) && std::isfinite(l.alpha_rad) && std::isfinite(l.fit_rms_m));
+			EXPECT_TRUE(std::isfinite(l.p0.x) && std::isfinite(l.p1.y));
+			EXPECT_LT(l.last_beam, n);
+			EXPECT_TRUE(isValidBeam(scan, l.first_beam) && isValidBeam(scan, l.last_beam));
+		}
+	}
 }

@@ -139,3 +139,36 @@ TEST(LineFit, LineAngleDifferenceIsUndirected)
 	EXPECT_NEAR(lineAngleDifference_rad(0, M_PI / 2), M_PI / 2, 1e-12);
 	EXPECT_NEAR(lineAngleDifference_rad(0, 3 * M_PI / 4), M_PI / 4, 1e-12);
 }
+
+TEST(LineFit, CovarianceOfRhoAlphaMatchesMonteCarlo)
+{
+	// 30 points along a 1.5 m wall whose centroid is 2 m along the line from
+	// the foot of the normal (so rho and alpha are correlated), noise 1 cm
+	const double alpha = 0.3, rho = 3.0, sigma = 0.01;
+	const double nx = std::cos(alpha), ny = std::sin(alpha), ux = -ny, uy = nx;
+	std::mt19937 rng(5);
+	std::normal_distribution<double> noise(0, sigma);
+	const int runs = 4000;
+	double sr = 0, sa = 0, srr = 0, saa = 0, sra = 0, predRR = 0, predAA = 0, predRA = 0;
+	for (int k = 0; k < runs; ++k)
+	{
+		std::vector<TPoint2D> pts;
+		for (int i = 0; i < 30; ++i)
+		{
+			const double t = 1.25 + 0.05 * i, e = noise(rng), f = noise(rng);
+			pts.emplace_back(rho * nx + t * ux + e, rho * ny + t * uy + f);
+		}
+		const TLineFit fit = fitLineTotalLeastSquares(pts);
+		const double dr = fit.rho_m - rho, da = fit.alpha_rad - alpha;
+		sr += dr, sa += da, srr += dr * dr, saa += da * da, sra += dr * da;
+		predRR += fit.var_rho_m2 / runs, predAA += fit.var_alpha_rad2 / runs, predRA += fit.cov_rho_alpha_m_rad / runs;
+	}
+	const double mr = sr / runs, ma = sa / runs;
+	const double varR = srr / runs - mr * mr, varA = saa / runs - ma * ma, covRA = sra / runs - mr * ma;
+	EXPECT_NEAR(predAA / varA, 1.0, 0.1);
+	EXPECT_NEAR(predRR / varR, 1.0, 0.1);
+	EXPECT_NEAR(predRA / covRA, 1.0, 0.1);
+	EXPECT_GT(std::abs(covRA) / std::sqrt(varR * varA), 0.8) << "strongly correlated by construction";
+	// noiseless: zero
+	EXPECT_EQ(fitLineTotalLeastSquares(pointsOnLine({0, 1}, {2, 1}, 10)).var_alpha_rad2 < 1e-20, true);
+}

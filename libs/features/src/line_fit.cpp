@@ -79,6 +79,18 @@ TLineFit fitLineTotalLeastSquares(const std::vector<mrpt::math::TPoint2D>& point
 	}
 	fit.rms_m = std::sqrt(sum2 / static_cast<double>(n));
 	fit.max_residual_m = worst;
+	const double ux = -std::sin(fit.alpha_rad), uy = std::cos(fit.alpha_rad);  // along the line
+	double S = 0;
+	for (const auto& p : points)
+	{
+		const double s = (p.x - mx) * ux + (p.y - my) * uy;
+		S += s * s;
+	}
+	const double sigma2 = n > 2 ? sum2 / static_cast<double>(n - 2) : 0.0;
+	const double t = mx * ux + my * uy;
+	fit.var_alpha_rad2 = S > 0 ? sigma2 / S : 0.0;
+	fit.var_rho_m2 = sigma2 / static_cast<double>(n) + t * t * fit.var_alpha_rad2;
+	fit.cov_rho_alpha_m_rad = t * fit.var_alpha_rad2;
 	fit.valid = true;
 	return fit;
 }

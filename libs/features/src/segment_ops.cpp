@@ -86,6 +86,9 @@ TLineSegment makeSegment(const TScanPoints& points, const std::vector<size_t>& i
 	s.last_beam = points.beam[indices.back()];
 	s.point_count = indices.size();
 	s.fit_rms_m = fit.rms_m;
+	s.var_rho_m2 = fit.var_rho_m2;
+	s.var_alpha_rad2 = fit.var_alpha_rad2;
+	s.cov_rho_alpha_m_rad = fit.cov_rho_alpha_m_rad;
 	return s;
 }
 

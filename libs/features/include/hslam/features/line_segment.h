@@ -36,6 +36,10 @@ struct TLineSegment
 	 * extractor (segment_ops.h markOccludedEnds). */
 	bool p0_occluded = false;
 	bool p1_occluded = false;  //!< the same for p1
+	/** Covariance of (rho_m, alpha_rad) of the TLS fit, from its residuals
+	 * (line_fit.h). Zero for noiseless points: floor it with the sensor noise
+	 * (e.g. scan.stdError) before using it as a weight. */
+	double var_rho_m2 = 0, var_alpha_rad2 = 0, cov_rho_alpha_m_rad = 0;
 
 	double length_m() const;
 	/** Direction of p0 -> p1 (rad, (-pi, pi]); the thesis' "gradient" as an angle. */
