@@ -33,7 +33,8 @@
  *    found with the scan-wide maximum are taken out, the remaining d2 is
  *    normalised by its own maximum and searched again. An absolute floor
  *    min_peak keeps pure sensor noise from becoming peaks when a scan has no
- *    corner at all.
+ *    corner at all; the default step k = 2 halves the noise of d2 and still
+ *    places corners within one beam.
  *  - The thesis code (appendix C.1) passes the first derivative through
  *    atan(57.2 d1 / max|d1|) before differentiating again; that compresses
  *    jumps but makes the threshold depend on the scan's steepest wall. Not used.
@@ -42,10 +43,12 @@
  *    Euclidean lengths and the gap aa counted beyond the normal point spacing
  *    (segment_ops.h gapCriterion), plus a collinearity check: the merged
  *    fit's RMS must stay below merge_rms_growth times the pieces' own RMS
- *    + 5 mm and below max_fit_rms_m (two parallel walls 10 cm apart pass the 10 deg test and eq. 56,
- *    but are not one line; a noisy wall's pieces are). The 10 deg test is
- *    only applied between pieces of >= 5 points: the direction of a 3-point
- *    piece under 1 cm noise is uncertain by more than 10 deg.
+ *    + 5 mm and below max_fit_rms_m (two parallel walls 10 cm apart pass the
+ *    10 deg test and eq. 56, but are not one line; a noisy wall's pieces
+ *    are). The 10 deg test is only applied where both pieces' directions are
+ *    known to better than a third of it (segment_ops.h TMergeRule): the
+ *    direction of a 3-point piece under 1 cm noise is uncertain by more than
+ *    10 deg.
  *  - A piece whose points deviate more than split_distance_m from the chord is
  *    split further by the iterative end point rule (a corner too shallow for
  *    the derivative, e.g. < 25 deg, or one within k beams of a run end).
