@@ -51,7 +51,10 @@ size_t checkLines(const mrpt::obs::CObservation2DRangeScan& scan, const TLineSeg
 		EXPECT_LE(l.first_beam, l.last_beam) << method;
 		EXPECT_TRUE(isValidBeam(scan, l.first_beam)) << method;
 		EXPECT_TRUE(isValidBeam(scan, l.last_beam)) << method;
-		if (k > 0) EXPECT_LE(lines[k - 1].first_beam, l.first_beam) << method << ": lines ordered by first beam";
+		if (k > 0)
+		{
+			EXPECT_LE(lines[k - 1].first_beam, l.first_beam) << method << ": lines ordered by first beam";
+		}
 		EXPECT_GE(l.rho_m, 0.0);
 		EXPECT_TRUE(l.alpha_rad > -M_PI && l.alpha_rad <= M_PI);
 		// endpoints lie on the line and no more than a few noise sigmas off

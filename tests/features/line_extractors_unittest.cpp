@@ -193,8 +193,14 @@ TEST_P(AllExtractors, InvalidBeamsMakeNoCornersAndNoLines)
 		{
 			frontPoints += l.point_count;
 			// the front wall may be cut only at invalid beams (no phantom corner elsewhere)
-			if (l.first_beam != 54u) EXPECT_TRUE(invalid.count(l.first_beam - 1)) << GetParam() << " " << l.first_beam;
-			if (l.last_beam != 116u) EXPECT_TRUE(invalid.count(l.last_beam + 1)) << GetParam() << " " << l.last_beam;
+			if (l.first_beam != 54u)
+			{
+				EXPECT_TRUE(invalid.count(l.first_beam - 1)) << GetParam() << " " << l.first_beam;
+			}
+			if (l.last_beam != 116u)
+			{
+				EXPECT_TRUE(invalid.count(l.last_beam + 1)) << GetParam() << " " << l.last_beam;
+			}
 		}
 	}
 	// the long valid stretches of the front wall (54-69, 102-116) are on lines
