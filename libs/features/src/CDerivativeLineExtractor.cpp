@@ -73,7 +73,14 @@ void peakPass(const std::vector<double>& d2, const std::vector<TIndexRange>& run
 
 std::vector<TIndexRange> CDerivativeLineExtractor::segmentByDerivative(const TScanPoints& points) const
 {
-	const std::vector<TIndexRange> runs = consecutiveBeamRuns(points);
+	// runs of consecutive valid beams, also cut where neighbouring points are
+	// farther apart than max_point_gap_m (no derivative across such a gap)
+	std::vector<TIndexRange> runs;
+	for (const TIndexRange& run : consecutiveBeamRuns(points))
+	{
+		const auto parts = splitAtPointGaps(points, run, m_options.max_point_gap_m);
+		runs.insert(runs.end(), parts.begin(), parts.end());
+	}
 	const size_t k = static_cast<size_t>(m_options.derivative_step_beams);
 	std::vector<double> d2;
 	std::vector<bool> has;
@@ -111,6 +118,7 @@ TLineSegmentList CDerivativeLineExtractor::extract(const mrpt::obs::CObservation
 	rule.max_rms_growth = m_options.merge_rms_growth;
 	rule.max_rms_m = m_options.max_fit_rms_m;
 	rule.max_gap_ratio = m_options.gap_ratio;
+	rule.max_gap_m = m_options.max_point_gap_m;
 	mergeCollinearNeighbours(points, ranges, rule);
 	refineBoundaries(points, ranges);
 	TLineSegmentList lines =

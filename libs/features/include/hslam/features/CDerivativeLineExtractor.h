@@ -4,7 +4,9 @@
  * Algorithm, per scan:
  *  1. Valid points only (scan_points.h); every invalid beam (flag off, NaN,
  *     <= 0, >= maxRange) ends a run, so no derivative is ever taken across
- *     one and invalid beams cannot produce corners.
+ *     one and invalid beams cannot produce corners. So does a step of more
+ *     than max_point_gap_m between neighbouring points (not in the thesis:
+ *     five points 0.6 m apart at grazing incidence are not a reliable wall).
  *  2. l_i = ln(r_i); second derivative by central finite differences w.r.t.
  *     the beam index, d2_i = (l_{i+k} - 2 l_i + l_{i-k}) / k with step k
  *     (thesis: k = 1), only where all three beams are in the same run.
@@ -77,6 +79,7 @@ class CDerivativeLineExtractor : public CLineExtractor
 		double split_distance_m = 0.05;  //!< IEP guard split of the pieces, chord distance (not in the thesis)
 		double merge_rms_growth = 2.0;  //!< collinearity test of the merge (segment_ops.h TMergeRule)
 		double max_fit_rms_m = 0.04;  //!< no merge may produce, and no line may have, a larger fit RMS
+		double max_point_gap_m = 0.5;  //!< neighbouring points farther apart are never on one line
 		int min_points = 5;  //!< points per line
 		double min_length_m = 0.2;  //!< line length
 
@@ -91,6 +94,7 @@ class CDerivativeLineExtractor : public CLineExtractor
 			v.real("split_distance_m", split_distance_m, 0.001, 1.0);
 			v.real("merge_rms_growth", merge_rms_growth, 1.0, 100.0);
 			v.real("max_fit_rms_m", max_fit_rms_m, 0.001, 1.0);
+			v.real("max_point_gap_m", max_point_gap_m, 0.01, 100.0);
 			v.integer("min_points", min_points, 2, 10000);
 			v.real("min_length_m", min_length_m, 0.0, 100.0);
 		}
