@@ -4,6 +4,7 @@
 #include <mrpt/poses/CPose2D.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -14,12 +15,6 @@ namespace
 using mrpt::math::TPoint2D;
 
 double distance(const TPoint2D& a, const TPoint2D& b) { return std::hypot(a.x - b.x, a.y - b.y); }
-
-std::vector<TPoint2D> gather(const TScanPoints& points, const TIndexRange& range)
-{
-	return {points.xy.begin() + static_cast<std::ptrdiff_t>(range.begin),
-			points.xy.begin() + static_cast<std::ptrdiff_t>(range.end)};
-}
 
 /** Distance of p from the infinite line through a and b (|p - a| if a == b). */
 double distanceToChord(const TPoint2D& p, const TPoint2D& a, const TPoint2D& b)
@@ -38,22 +33,69 @@ double directionStdError_rad(const TScanPoints& points, const TIndexRange& r, do
 	return std::max(sigma_m, 1e-3) * std::sqrt(12.0 / static_cast<double>(r.size())) / extent;
 }
 
-bool canMerge(const TScanPoints& points, const TIndexRange& a, const TIndexRange& b, const TMergeRule& rule,
-			  double& mergedRms)
+/** Prefix sums of the point moments: the TLS direction and RMS of any index
+ * range in O(1) (the merge loop evaluates many overlapping ranges). */
+class CRangeMoments
+{
+   public:
+	struct TFit
+	{
+		bool valid = false;
+		double alpha_rad = 0;  //!< normal direction (modulo pi)
+		double rms_m = 0;
+	};
+
+	explicit CRangeMoments(const TScanPoints& points)
+	{
+		const size_t n = points.size();
+		for (const auto& p : points.xy) m_origin.x += p.x / static_cast<double>(n), m_origin.y += p.y / static_cast<double>(n);
+		m_sums.assign(n + 1, {});
+		for (size_t i = 0; i < n; ++i)
+		{
+			const double x = points.xy[i].x - m_origin.x, y = points.xy[i].y - m_origin.y;
+			const auto& s = m_sums[i];
+			m_sums[i + 1] = {s[0] + x, s[1] + y, s[2] + x * x, s[3] + y * y, s[4] + x * y};
+		}
+	}
+
+	TFit fit(const TIndexRange& r) const
+	{
+		TFit f;
+		const double n = static_cast<double>(r.size());
+		if (r.size() < 2) return f;
+		std::array<double, 5> d;
+		for (size_t k = 0; k < 5; ++k) d[k] = m_sums[r.end][k] - m_sums[r.begin][k];
+		const double mx = d[0] / n, my = d[1] / n;
+		const double sxx = d[2] - n * mx * mx, syy = d[3] - n * my * my, sxy = d[4] - n * mx * my;
+		if (sxx + syy <= 1e-12) return f;
+		f.valid = true;
+		f.alpha_rad = 0.5 * std::atan2(2 * sxy, sxx - syy) + M_PI / 2;
+		const double smallest = 0.5 * ((sxx + syy) - std::hypot(sxx - syy, 2 * sxy));  // residual sum of squares
+		f.rms_m = std::sqrt(std::max(0.0, smallest) / n);
+		return f;
+	}
+
+   private:
+	TPoint2D m_origin{0, 0};
+	std::vector<std::array<double, 5>> m_sums;  //!< x, y, xx, yy, xy of the first i points
+};
+
+bool canMerge(const TScanPoints& points, const CRangeMoments& moments, const TIndexRange& a, const TIndexRange& b,
+			  const TMergeRule& rule, double& mergedRms)
 {
 	if (a.end != b.begin) return false;
 	if (rule.max_gap_m > 0 && distance(points.xy[a.end - 1], points.xy[b.begin]) > rule.max_gap_m) return false;
 	if (rule.max_gap_ratio > 0 && gapCriterion(points, a, b) > rule.max_gap_ratio) return false;
-	const TLineFit fa = fitRange(points, a), fb = fitRange(points, b);
+	const auto fa = moments.fit(a), fb = moments.fit(b);
 	// noise of one wall: the larger RMS of the two (a few points can look collinear by chance)
 	const double sigma = std::max(fa.rms_m, fb.rms_m);
 	if (fa.valid && fb.valid && directionStdError_rad(points, a, sigma) < rule.max_angle_rad / 3 &&
 		directionStdError_rad(points, b, sigma) < rule.max_angle_rad / 3 &&
 		lineAngleDifference_rad(fa.alpha_rad, fb.alpha_rad) > rule.max_angle_rad)
 		return false;
-	const TLineFit merged = fitRange(points, {a.begin, b.end});
+	const TIndexRange both{a.begin, b.end};
+	const auto merged = moments.fit(both);
 	if (!merged.valid) return false;
-	if (rule.max_residual_m > 0 && merged.max_residual_m > rule.max_residual_m) return false;
 	if (rule.max_rms_m > 0 && merged.rms_m > rule.max_rms_m) return false;
 	if (rule.max_rms_growth > 0)
 	{
@@ -61,6 +103,7 @@ bool canMerge(const TScanPoints& points, const TIndexRange& a, const TIndexRange
 		const double pooled = std::sqrt((na * fa.rms_m * fa.rms_m + nb * fb.rms_m * fb.rms_m) / (na + nb));
 		if (merged.rms_m > rule.max_rms_growth * pooled + kMergeRmsFloor_m) return false;
 	}
+	if (rule.max_residual_m > 0 && fitRange(points, both).max_residual_m > rule.max_residual_m) return false;
 	mergedRms = merged.rms_m;
 	return true;
 }
@@ -68,7 +111,7 @@ bool canMerge(const TScanPoints& points, const TIndexRange& a, const TIndexRange
 
 TLineFit fitRange(const TScanPoints& points, const TIndexRange& range)
 {
-	return fitLineTotalLeastSquares(gather(points, range));
+	return fitLineTotalLeastSquares(points.xy.data() + range.begin, range.size());
 }
 
 TLineSegment makeSegment(const TScanPoints& points, const std::vector<size_t>& indices)
@@ -184,9 +227,10 @@ void mergeCollinearNeighbours(const TScanPoints& points, std::vector<TIndexRange
 	// cost[k]: merged RMS of ranges k and k+1, +inf if they may not merge;
 	// only the two costs next to a merge change, so each is computed once per change
 	const double never = std::numeric_limits<double>::infinity();
+	const CRangeMoments moments(points);
 	auto cost = [&](size_t k) {
 		double rms = 0;
-		return canMerge(points, ranges[k], ranges[k + 1], rule, rms) ? rms : never;
+		return canMerge(points, moments, ranges[k], ranges[k + 1], rule, rms) ? rms : never;
 	};
 	std::vector<double> costs;
 	for (size_t k = 0; k + 1 < ranges.size(); ++k) costs.push_back(cost(k));

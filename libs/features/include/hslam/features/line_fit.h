@@ -35,6 +35,7 @@ struct TLineFit
 	 * cov(rho, alpha) = t var(alpha), t = centroid's along-line coordinate
 	 * (c . (-sin alpha, cos alpha)). */
 	double var_rho_m2 = 0, var_alpha_rad2 = 0, cov_rho_alpha_m_rad = 0;
+	double normal_x = 1, normal_y = 0;  //!< cos(alpha), sin(alpha)
 
 	/** Signed orthogonal distance of p to the line (m). */
 	double distanceTo(const mrpt::math::TPoint2D& p) const;
@@ -44,6 +45,8 @@ struct TLineFit
 
 /** TLS fit of all points. */
 TLineFit fitLineTotalLeastSquares(const std::vector<mrpt::math::TPoint2D>& points);
+/** TLS fit of the n points starting at `points`. */
+TLineFit fitLineTotalLeastSquares(const mrpt::math::TPoint2D* points, size_t n);
 
 /** Normal form (rho >= 0, alpha in (-pi, pi]) of the line through `point`
  * with unit normal (cos(normal_rad), sin(normal_rad)). */
