@@ -260,11 +260,19 @@ std::vector<TRealRow> runReal(const std::vector<TNamedExtractor>& extractors,
 	return rows;
 }
 
+/** intel, aces and csail from ../shared/datasets/carmen, looked up from the
+ * worktree root, build/ or build/bin/ (the first folder that exists). */
 std::vector<std::string> defaultLogs()
 {
+	std::string dir = "../shared/datasets/carmen";
+	for (const char* candidate : {"../shared/datasets/carmen", "../../shared/datasets/carmen", "../../../shared/datasets/carmen"})
+		if (fs::is_directory(candidate))
+		{
+			dir = candidate;
+			break;
+		}
 	std::vector<std::string> logs;
-	for (const char* name : {"intel", "aces", "csail"})
-		logs.push_back(std::string("../shared/datasets/carmen/") + name + "-corrected.log.gz");
+	for (const char* name : {"intel", "aces", "csail"}) logs.push_back(dir + "/" + name + "-corrected.log.gz");
 	return logs;
 }
 }  // namespace
