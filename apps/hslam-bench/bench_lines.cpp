@@ -78,7 +78,7 @@ std::vector<TNamedExtractor> benchExtractors()
 	for (const auto& m : features::lineExtractorMethods())
 		out.push_back({m, features::createLineExtractor(m, empty, features::lineExtractorSection(m))});
 	const mrpt::config::CConfigFileMemory thesis(std::string(
-		"[d]\nderivative_step_beams = 1\nmin_peak = 0\nsplit_distance_m = 1\nmerge_rms_growth = 100\n"
+		"[d]\nderivative_step_deg = 1\nmin_peak = 0\nsplit_distance_m = 1\nmerge_rms_growth = 100\n"
 		"max_fit_rms_m = 1\n"));
 	out.push_back({"deriv-thesis", features::createLineExtractor("derivative", thesis, "d")});
 	return out;

@@ -76,13 +76,13 @@ TEST(LineExtractorFactory, OutOfRangeAndMalformedValues)
 TEST(LineExtractorFactory, OptionsAreReadWithUnits)
 {
 	const mrpt::config::CConfigFileMemory cfg(std::string(
-		"[line_extraction_derivative]\nmerge_angle_deg = 20\npeak_threshold = 0.2\nderivative_step_beams = 1\n"
+		"[line_extraction_derivative]\nmerge_angle_deg = 20\npeak_threshold = 0.2\nderivative_step_deg = 1\n"
 		"gap_ratio = 1.1\n"));
 	CDerivativeLineExtractor::TOptions o;
 	hslam::common::loadOptions(o, cfg, "line_extraction_derivative");
 	EXPECT_NEAR(o.merge_angle_rad, 20 * M_PI / 180, 1e-12);
 	EXPECT_DOUBLE_EQ(o.peak_threshold, 0.2);
-	EXPECT_EQ(o.derivative_step_beams, 1);
+	EXPECT_NEAR(o.derivative_step_rad, M_PI / 180, 1e-12);
 	EXPECT_DOUBLE_EQ(o.gap_ratio, 1.1);
 }
 

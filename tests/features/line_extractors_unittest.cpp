@@ -310,3 +310,23 @@ TEST_P(AllExtractors, GarbageScansNeverCrashAndGiveSaneLines)
 		}
 	}
 }
+
+TEST_P(AllExtractors, HalfDegreeScansGiveTheSameWalls)
+{
+	// 361 beams over 180 deg (as in the csail log): corners between beams 106/107 and 233/234
+	const auto ex = defaultExtractor(GetParam());
+	TScanLayout layout;
+	layout.beams = 361;
+	for (int seed = 0; seed <= 5; ++seed)
+	{
+		const auto sim = simulateScan(boxRoom(seed == 0 ? 0.0 : 0.01), mrpt::poses::CPose2D(), layout,
+									  static_cast<uint32_t>(seed));
+		const TLineSegmentList lines = ex->extract(sim.scan);
+		const TLineScore score = scoreLines(visibleWalls(sim, 5, 0.2), lines);
+		EXPECT_EQ(score.found, 3u) << GetParam() << " seed " << seed;
+		EXPECT_EQ(score.false_positives, 0u) << GetParam() << " seed " << seed;
+		ASSERT_EQ(lines.size(), 3u);
+		EXPECT_LE(std::abs(static_cast<int>(lines[0].last_beam) - 106), 1) << GetParam() << " seed " << seed;
+		EXPECT_LE(std::abs(static_cast<int>(lines[2].first_beam) - 234), 1) << GetParam() << " seed " << seed;
+	}
+}

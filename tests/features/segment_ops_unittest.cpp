@@ -115,7 +115,7 @@ TEST(DerivativeSegmentation, PeaksAtCornersAndJumpsOnly)
 	EXPECT_NEAR(static_cast<double>(pts.beam[pieces[2].begin]), test::kLeftCornerBeam, 1.0);
 	// thesis step k = 1 finds the same corners
 	CDerivativeLineExtractor::TOptions o;
-	o.derivative_step_beams = 1;
+	o.derivative_step_rad = M_PI / 180;  // k = 1
 	const auto piecesK1 = CDerivativeLineExtractor(o).segmentByDerivative(pts);
 	ASSERT_EQ(piecesK1.size(), 3u);
 	EXPECT_NEAR(static_cast<double>(pts.beam[piecesK1[1].begin]), test::kRightCornerBeam, 1.0);

@@ -81,7 +81,9 @@ std::vector<TIndexRange> CDerivativeLineExtractor::segmentByDerivative(const TSc
 		const auto parts = splitAtPointGaps(points, run, m_options.max_point_gap_m);
 		runs.insert(runs.end(), parts.begin(), parts.end());
 	}
-	const size_t k = static_cast<size_t>(m_options.derivative_step_beams);
+	const double step_rad = points.beam_step_rad > 0 ? points.beam_step_rad : M_PI / 180;
+	const size_t k = static_cast<size_t>(std::max(1.0, std::round(m_options.derivative_step_rad / step_rad)));
+	const double floor = m_options.min_peak * step_rad / (M_PI / 180);  // min_peak is given for 1 deg beams
 	std::vector<double> d2;
 	std::vector<bool> has;
 	logRangeSecondDerivative(points, runs, k, d2, has);
@@ -92,7 +94,7 @@ std::vector<TIndexRange> CDerivativeLineExtractor::segmentByDerivative(const TSc
 	// Two passes, each normalised by its own largest peak (see the header:
 	// one depth jump must not hide the corners).
 	for (int pass = 0; pass < 2; ++pass)
-		peakPass(d2, runs, k, m_options.peak_threshold, m_options.min_peak, excluded, startsPiece);
+		peakPass(d2, runs, k, m_options.peak_threshold, floor, excluded, startsPiece);
 
 	std::vector<TIndexRange> pieces;
 	for (size_t i = 0; i < points.size(); ++i)

@@ -10,6 +10,9 @@
  *  2. l_i = ln(r_i); second derivative by central finite differences w.r.t.
  *     the beam index, d2_i = (l_{i+k} - 2 l_i + l_{i-k}) / k with step k
  *     (thesis: k = 1), only where all three beams are in the same run.
+ *     k = derivative_step_deg / beam spacing, rounded, >= 1 (2 beams at 1 deg,
+ *     4 at 0.5 deg), and min_peak, given for 1 deg beams, is scaled by the
+ *     beam spacing, so the method behaves alike on 181- and 361-beam scans.
  *     A straight wall gives a smooth, small d2 (d^2 ln r / dtheta^2 =
  *     1/cos^2 of the incidence angle), a corner a single-signed peak, a depth
  *     jump a +/- pair: a zero crossing.
@@ -35,8 +38,8 @@
  *    found with the scan-wide maximum are taken out, the remaining d2 is
  *    normalised by its own maximum and searched again. An absolute floor
  *    min_peak keeps pure sensor noise from becoming peaks when a scan has no
- *    corner at all; the default step k = 2 halves the noise of d2 and still
- *    places corners within one beam.
+ *    corner at all; the default step of 2 deg (k = 2 at 1 deg) halves the
+ *    noise of d2 and still places corners within one beam.
  *  - The thesis code (appendix C.1) passes the first derivative through
  *    atan(57.2 d1 / max|d1|) before differentiating again; that compresses
  *    jumps but makes the threshold depend on the scan's steepest wall. Not used.
@@ -72,8 +75,8 @@ class CDerivativeLineExtractor : public CLineExtractor
 	struct TOptions
 	{
 		double peak_threshold = 0.1;  //!< kept |d2| relative to the largest peak (thesis 0.1)
-		double min_peak = 0.02;  //!< absolute floor on |d2| (change of d ln r / d beam)
-		int derivative_step_beams = 2;  //!< finite-difference step k (thesis 1)
+		double min_peak = 0.02;  //!< absolute floor on |d2| (change of d ln r / d beam), for 1 deg beams
+		double derivative_step_rad = 2.0 * M_PI / 180;  //!< finite-difference step as an angle (thesis: 1 beam = 1 deg)
 		double merge_angle_rad = 10.0 * M_PI / 180;  //!< noise filter 1 (thesis 10 deg)
 		double gap_ratio = 1.05;  //!< noise filter 2, eq. 56 (thesis 1.05)
 		double split_distance_m = 0.05;  //!< IEP guard split of the pieces, chord distance (not in the thesis)
@@ -88,7 +91,7 @@ class CDerivativeLineExtractor : public CLineExtractor
 		{
 			v.real("peak_threshold", peak_threshold, 0.001, 1.0);
 			v.real("min_peak", min_peak, 0.0, 10.0);
-			v.integer("derivative_step_beams", derivative_step_beams, 1, 10);
+			v.degrees("derivative_step_deg", derivative_step_rad, 0.1, 20.0);
 			v.degrees("merge_angle_deg", merge_angle_rad, 0.0, 45.0);
 			v.real("gap_ratio", gap_ratio, 1.0, 10.0);
 			v.real("split_distance_m", split_distance_m, 0.001, 1.0);
