@@ -42,7 +42,8 @@ inline const char* kMrptSampleRawlog = "/usr/share/mrpt/datasets/2006-01ENE-21-S
 int runGridSuite(const std::vector<std::string>& rawlogs, int repetitions);
 
 /** Line extractors on thesis table 3 scenes and real scans (bench_lines.cpp);
- * `logs` empty: ../shared/datasets/carmen/{intel,aces,csail}-corrected.log.gz. */
+ * `logs` empty: ../shared/datasets/carmen/{intel,aces,csail}-corrected.log.gz
+ * (relative to the worktree root, build/ or build/bin/). */
 int runLinesSuite(const std::vector<std::string>& logs, int repetitions);
 
 }  // namespace hslam::bench

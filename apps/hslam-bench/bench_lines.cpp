@@ -12,10 +12,13 @@
  * and the time. CARMEN logs (*.log, *.log.gz) are converted to a temporary
  * rawlog with the foundation importer; other files are read as rawlogs.
  * Time per scan = best of `repetitions` runs over all scans, divided by the
- * scan count. MRPT's RANSAC uses MRPT's global random generator, seeded here. */
+ * scan count. MRPT's RANSAC uses MRPT's global random generator, seeded here.
+ * The extra row "deriv-thesis" runs the derivative method with the thesis'
+ * own settings where ours deviate (see CDerivativeLineExtractor.h). */
 #include "bench_common.h"
 
 #include <hslam/common/options_io.h>
+#include <hslam/common/tum_trajectory.h>
 #include <hslam/features/CLineExtractor.h>
 #include <hslam/features/line_scenes.h>
 #include <hslam/features/line_scoring.h>
@@ -24,6 +27,7 @@
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/random/RandomGenerators.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -48,13 +52,6 @@ struct TSyntheticRow
 	double us_per_scan = 0;
 };
 
-struct TRealRow
-{
-	std::string log, method;
-	size_t scans = 0, lines = 0, validPoints = 0, linePoints = 0;
-	double sumRms_m = 0, us_per_scan = 0;
-};
-
 void accumulate(features::TLineScore& total, const features::TLineScore& s)
 {
 	total.truth += s.truth;
@@ -65,16 +62,29 @@ void accumulate(features::TLineScore& total, const features::TLineScore& s)
 	total.max_endpoint_error_m = std::max(total.max_endpoint_error_m, s.max_endpoint_error_m);
 }
 
-std::vector<std::unique_ptr<CLineExtractor>> defaultExtractors()
+struct TNamedExtractor
+{
+	std::string label;
+	std::unique_ptr<CLineExtractor> extractor;
+};
+
+/** The three methods with default options, then "deriv-thesis": the
+ * derivative method with the thesis' settings where ours deviate (step 1, no
+ * absolute peak floor, guard split / RMS limits effectively off). */
+std::vector<TNamedExtractor> benchExtractors()
 {
 	const mrpt::config::CConfigFileMemory empty;
-	std::vector<std::unique_ptr<CLineExtractor>> out;
+	std::vector<TNamedExtractor> out;
 	for (const auto& m : features::lineExtractorMethods())
-		out.push_back(features::createLineExtractor(m, empty, features::lineExtractorSection(m)));
+		out.push_back({m, features::createLineExtractor(m, empty, features::lineExtractorSection(m))});
+	const mrpt::config::CConfigFileMemory thesis(std::string(
+		"[d]\nderivative_step_deg = 1\nmin_peak = 0\nsplit_distance_m = 1\nmerge_rms_growth = 100\n"
+		"max_fit_rms_m = 1\n"));
+	out.push_back({"deriv-thesis", features::createLineExtractor("derivative", thesis, "d")});
 	return out;
 }
 
-std::vector<TSyntheticRow> runSynthetic(const std::vector<std::unique_ptr<CLineExtractor>>& extractors, int repetitions)
+std::vector<TSyntheticRow> runSynthetic(const std::vector<TNamedExtractor>& extractors, int repetitions)
 {
 	std::vector<TSyntheticRow> rows;
 	std::mt19937 rng(42);
@@ -87,17 +97,16 @@ std::vector<TSyntheticRow> runSynthetic(const std::vector<std::unique_ptr<CLineE
 			const mrpt::poses::CPose2D pose(0.1 * jitter(rng), 0.1 * jitter(rng), 3.0 * M_PI / 180 * jitter(rng));
 			sims.push_back(features::simulateScan(scene.walls, pose, {}, static_cast<uint32_t>(1000 + t)));
 		}
-		for (const auto& ex : extractors)
+		for (const auto& [label, ex] : extractors)
 		{
-			TSyntheticRow row{scene.name, ex->name(), {}, 0};
+			TSyntheticRow row{scene.name, label, {}, 0};
 			mrpt::random::getRandomGenerator().randomize(1234);
 			for (const auto& sim : sims)
 				accumulate(row.total, features::scoreLines(features::visibleWalls(sim, 5, 0.2), ex->extract(sim.scan)));
-			size_t sink = 0;
 			const double t_s = bestTimeOf(repetitions, [&] {
-				for (const auto& sim : sims) sink += ex->extract(sim.scan).size();
+				for (const auto& sim : sims) (void)ex->extract(sim.scan);  // virtual call: not elided
 			});
-			row.us_per_scan = 1e6 * t_s / static_cast<double>(sims.size()) + 0 * static_cast<double>(sink);
+			row.us_per_scan = 1e6 * t_s / static_cast<double>(sims.size());
 			rows.push_back(row);
 		}
 	}
@@ -111,26 +120,99 @@ bool isCarmenLog(const std::string& path)
 	return endsWith(".log") || endsWith(".log.gz");
 }
 
-/** Front laser scans of a rawlog or CARMEN log. */
-std::vector<mrpt::obs::CObservation2DRangeScan> loadScans(const std::string& path)
+struct TRealLog
+{
+	std::vector<mrpt::obs::CObservation2DRangeScan> scans;
+	/** Reference (corrected) pose of each scan; empty if the log has none. */
+	std::vector<mrpt::poses::CPose2D> reference;
+};
+
+/** Front laser scans of a rawlog or CARMEN log; for CARMEN logs also the
+ * reference poses (the importer's TUM file has one line per front scan). */
+TRealLog loadScans(const std::string& path)
 {
 	std::string rawlog = path;
 	fs::path tmpDir;
+	TRealLog log;
+	common::TTrajectory2D reference;
 	if (isCarmenLog(path))
 	{
 		tmpDir = fs::temp_directory_path() / ("hslam-bench-lines-" + std::to_string(std::random_device{}()));
 		fs::create_directories(tmpDir);
 		rawlog = (tmpDir / "scans.rawlog").string();
 		io::convertCarmenLog(path, rawlog, (tmpDir / "ref.tum").string(), {});
+		reference = common::readTumFile((tmpDir / "ref.tum").string());
 	}
-	std::vector<mrpt::obs::CObservation2DRangeScan> scans;
 	for (auto& ps : loadPosedScans(rawlog))
-		if (ps.scan.sensorLabel == "LASER" || !isCarmenLog(path)) scans.push_back(std::move(ps.scan));
+		if (ps.scan.sensorLabel == "LASER" || !isCarmenLog(path)) log.scans.push_back(std::move(ps.scan));
 	if (!tmpDir.empty()) fs::remove_all(tmpDir);
-	return scans;
+	if (reference.size() == log.scans.size())
+		for (const auto& r : reference) log.reference.emplace_back(r.pose);
+	return log;
 }
 
-std::vector<TRealRow> runReal(const std::vector<std::unique_ptr<CLineExtractor>>& extractors,
+/** Repeatability of lines between consecutive scans with reference poses. */
+struct TRepeatability
+{
+	size_t lines = 0;  //!< lines >= kRepeatMinLength_m in scan k+1 (k+1 with a reference)
+	size_t partnered = 0;  //!< ... with a partner line in scan k
+	std::vector<double> endErrorReal_m, endErrorOccluded_m;  //!< along-line end point differences
+};
+
+constexpr double kRepeatMinLength_m = 1.0, kRepeatMaxOffset_m = 0.1, kRepeatMaxAngle_rad = 3.0 * M_PI / 180;
+
+/** Adds the comparison of `cur` (scan k+1) with `prev` (scan k) moved into the frame of k+1 by `prevInCur`. */
+void compareConsecutive(const TLineSegmentList& prev, const TLineSegmentList& cur, const mrpt::poses::CPose2D& prevInCur,
+						TRepeatability& rep)
+{
+	for (const auto& c : cur)
+	{
+		if (c.length_m() < kRepeatMinLength_m) continue;
+		++rep.lines;
+		const double L = c.length_m(), ux = (c.p1.x - c.p0.x) / L, uy = (c.p1.y - c.p0.y) / L;
+		auto along = [&](const mrpt::math::TPoint2D& p) { return (p.x - c.p0.x) * ux + (p.y - c.p0.y) * uy; };
+		for (const auto& p : prev)
+		{
+			mrpt::math::TPoint2D q0, q1;
+			prevInCur.composePoint(p.p0.x, p.p0.y, q0.x, q0.y);
+			prevInCur.composePoint(p.p1.x, p.p1.y, q1.x, q1.y);
+			if (std::abs(c.distanceTo(q0)) > kRepeatMaxOffset_m || std::abs(c.distanceTo(q1)) > kRepeatMaxOffset_m) continue;
+			const double dir = std::atan2(q1.y - q0.y, q1.x - q0.x), cdir = std::atan2(uy, ux);
+			const double dAngle = std::abs(std::remainder(dir - cdir, M_PI));
+			if (dAngle > kRepeatMaxAngle_rad) continue;
+			double a0 = along(q0), a1 = along(q1);
+			bool occ0 = p.p0_occluded, occ1 = p.p1_occluded;
+			if (a0 > a1)
+			{
+				std::swap(a0, a1);
+				std::swap(occ0, occ1);
+			}
+			if (a1 < 0 || a0 > L) continue;  // no overlap
+			++rep.partnered;
+			// same wall end seen twice: c.p0 <-> along 0, c.p1 <-> along L
+			(c.p0_occluded || occ0 ? rep.endErrorOccluded_m : rep.endErrorReal_m).push_back(std::abs(a0));
+			(c.p1_occluded || occ1 ? rep.endErrorOccluded_m : rep.endErrorReal_m).push_back(std::abs(a1 - L));
+			break;
+		}
+	}
+}
+
+double median(std::vector<double> v)
+{
+	if (v.empty()) return 0;
+	std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+	return v[v.size() / 2];
+}
+
+struct TRealRow
+{
+	std::string log, method;
+	size_t scans = 0, lines = 0, validPoints = 0, linePoints = 0, ends = 0, occludedEnds = 0;
+	double sumRms_m = 0, us_per_scan = 0;
+	TRepeatability repeat;
+};
+
+std::vector<TRealRow> runReal(const std::vector<TNamedExtractor>& extractors,
 							  const std::vector<std::string>& logs, int repetitions)
 {
 	std::vector<TRealRow> rows;
@@ -141,16 +223,19 @@ std::vector<TRealRow> runReal(const std::vector<std::unique_ptr<CLineExtractor>>
 			std::cerr << "hslam-bench lines: skipping missing " << log << "\n";
 			continue;
 		}
-		const auto scans = loadScans(log);
-		for (const auto& ex : extractors)
+		const TRealLog data = loadScans(log);
+		const auto& scans = data.scans;
+		for (const auto& [label, ex] : extractors)
 		{
 			TRealRow row;
 			row.log = fs::path(log).filename().string();
-			row.method = ex->name();
+			row.method = label;
 			row.scans = scans.size();
 			mrpt::random::getRandomGenerator().randomize(1234);
-			for (const auto& scan : scans)
+			TLineSegmentList previous;
+			for (size_t k = 0; k < scans.size(); ++k)
 			{
+				const auto& scan = scans[k];
 				const TLineSegmentList lines = ex->extract(scan);
 				row.validPoints += features::validScanPoints(scan).size();
 				row.lines += lines.size();
@@ -158,31 +243,43 @@ std::vector<TRealRow> runReal(const std::vector<std::unique_ptr<CLineExtractor>>
 				{
 					row.linePoints += l.point_count;
 					row.sumRms_m += l.fit_rms_m;
+					row.ends += 2;
+					row.occludedEnds += l.p0_occluded + l.p1_occluded;
 				}
+				if (k > 0 && !data.reference.empty())
+					compareConsecutive(previous, lines, data.reference[k - 1] - data.reference[k], row.repeat);
+				previous = lines;
 			}
-			size_t sink = 0;
 			const double t_s = bestTimeOf(repetitions, [&] {
-				for (const auto& scan : scans) sink += ex->extract(scan).size();
+				for (const auto& scan : scans) (void)ex->extract(scan);  // virtual call: not elided
 			});
-			row.us_per_scan = scans.empty() ? 0 : 1e6 * t_s / static_cast<double>(scans.size()) + 0 * static_cast<double>(sink);
+			row.us_per_scan = scans.empty() ? 0 : 1e6 * t_s / static_cast<double>(scans.size());
 			rows.push_back(row);
 		}
 	}
 	return rows;
 }
 
+/** intel, aces and csail from ../shared/datasets/carmen, looked up from the
+ * worktree root, build/ or build/bin/ (the first folder that exists). */
 std::vector<std::string> defaultLogs()
 {
+	std::string dir = "../shared/datasets/carmen";
+	for (const char* candidate : {"../shared/datasets/carmen", "../../shared/datasets/carmen", "../../../shared/datasets/carmen"})
+		if (fs::is_directory(candidate))
+		{
+			dir = candidate;
+			break;
+		}
 	std::vector<std::string> logs;
-	for (const char* name : {"intel", "aces", "csail"})
-		logs.push_back(std::string("../shared/datasets/carmen/") + name + "-corrected.log.gz");
+	for (const char* name : {"intel", "aces", "csail"}) logs.push_back(dir + "/" + name + "-corrected.log.gz");
 	return logs;
 }
 }  // namespace
 
 int runLinesSuite(const std::vector<std::string>& inputs, int repetitions)
 {
-	const auto extractors = defaultExtractors();
+	const auto extractors = benchExtractors();
 	const auto synthetic = runSynthetic(extractors, repetitions);
 	std::cout << "Suite lines: line extraction, thesis table 3 environments (" << kTrials
 			  << " noisy views each, sigma " << kSigma_m * 100 << " cm, noisy wall " << kNoisySigma_m * 100
@@ -212,28 +309,41 @@ int runLinesSuite(const std::vector<std::string>& inputs, int repetitions)
 	std::vector<std::string> logs = inputs.empty() ? defaultLogs() : inputs;
 	const auto real = runReal(extractors, logs, repetitions);
 	std::map<std::string, std::pair<double, size_t>> realUs;  // sum of us, scans
+	std::map<std::string, TRepeatability> realRepeat;
 	if (!real.empty())
 	{
-		std::cout << "\nReal scans (no ground truth): lines per scan, share of valid points on a line, mean fit RMS\n\n"
-				  << std::left << std::setw(28) << "log" << std::setw(12) << "method" << std::right << std::setw(7)
-				  << "scans" << std::setw(11) << "lines/scan" << std::setw(9) << "covered" << std::setw(10)
-				  << "rms mm" << std::setw(10) << "us/scan" << "\n";
+		std::cout << "\nReal scans (no ground-truth lines): lines per scan; covered = share of valid points on a line;\n"
+					 "rms = mean fit RMS; occl = share of line ends flagged occluded; repeat = share of lines >= 1 m\n"
+					 "with a partner in the previous scan moved by the reference poses (10 cm, 3 deg, overlapping);\n"
+					 "end mm = median along-line distance of partnered ends, real (neither flagged) / occluded\n\n"
+				  << std::left << std::setw(24) << "log" << std::setw(11) << "method" << std::right << std::setw(6)
+				  << "scans" << std::setw(11) << "lines/scan" << std::setw(9) << "covered" << std::setw(8) << "rms mm"
+				  << std::setw(7) << "occl" << std::setw(8) << "repeat" << std::setw(14) << "end mm r/o" << std::setw(10)
+				  << "us/scan" << "\n";
 		for (const auto& r : real)
 		{
-			std::cout << std::left << std::setw(28) << r.log.substr(0, 27) << std::setw(12) << r.method << std::right
-					  << std::setw(7) << r.scans << std::fixed << std::setprecision(2) << std::setw(11)
+			std::ostringstream ends;
+			ends << std::fixed << std::setprecision(0) << 1000 * median(r.repeat.endErrorReal_m) << "/"
+				 << 1000 * median(r.repeat.endErrorOccluded_m);
+			std::cout << std::left << std::setw(24) << r.log.substr(0, 23) << std::setw(11) << r.method << std::right
+					  << std::setw(6) << r.scans << std::fixed << std::setprecision(2) << std::setw(11)
 					  << static_cast<double>(r.lines) / std::max<size_t>(1, r.scans) << std::setprecision(3)
 					  << std::setw(9) << static_cast<double>(r.linePoints) / std::max<size_t>(1, r.validPoints)
-					  << std::setprecision(1) << std::setw(10) << 1000 * r.sumRms_m / std::max<size_t>(1, r.lines)
-					  << std::setw(10) << r.us_per_scan << "\n";
+					  << std::setprecision(1) << std::setw(8) << 1000 * r.sumRms_m / std::max<size_t>(1, r.lines)
+					  << std::setprecision(2) << std::setw(7)
+					  << static_cast<double>(r.occludedEnds) / std::max<size_t>(1, r.ends) << std::setw(8)
+					  << static_cast<double>(r.repeat.partnered) / std::max<size_t>(1, r.repeat.lines) << std::setw(14)
+					  << ends.str() << std::setprecision(1) << std::setw(10) << r.us_per_scan << "\n";
+			auto& pooledRepeat = realRepeat[r.method];
+			pooledRepeat.lines += r.repeat.lines;
+			pooledRepeat.partnered += r.repeat.partnered;
 			realUs[r.method].first += r.us_per_scan * static_cast<double>(r.scans);
 			realUs[r.method].second += r.scans;
 		}
 	}
 	std::cout << std::defaultfloat << std::setprecision(6) << "\n";
-	for (const auto& ex : extractors)
+	for (const auto& m : features::lineExtractorMethods())
 	{
-		const std::string m = ex->name();
 		const auto& p = pooled[m];
 		std::cout << "lines_f1_" << m << "=" << p.f1() << "\nlines_recall_" << m << "=" << p.recall()
 				  << "\nlines_fp_per_scan_" << m << "=" << p.false_positives / (3.0 * kTrials) << "\nlines_endpoint_mm_"
@@ -242,6 +352,9 @@ int runLinesSuite(const std::vector<std::string>& inputs, int repetitions)
 		const auto& ru = realUs[m];
 		// real scans when there are any (the representative case), else synthetic
 		std::cout << "lines_us_per_scan_" << m << "=" << (ru.second ? ru.first / ru.second : synthUs[m]) << "\n";
+		if (realRepeat[m].lines)
+			std::cout << "lines_real_repeatability_" << m << "="
+					  << static_cast<double>(realRepeat[m].partnered) / realRepeat[m].lines << "\n";
 	}
 	return 0;
 }

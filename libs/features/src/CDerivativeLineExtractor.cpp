@@ -73,8 +73,17 @@ void peakPass(const std::vector<double>& d2, const std::vector<TIndexRange>& run
 
 std::vector<TIndexRange> CDerivativeLineExtractor::segmentByDerivative(const TScanPoints& points) const
 {
-	const std::vector<TIndexRange> runs = consecutiveBeamRuns(points);
-	const size_t k = static_cast<size_t>(m_options.derivative_step_beams);
+	// runs of consecutive valid beams, also cut where neighbouring points are
+	// farther apart than max_point_gap_m (no derivative across such a gap)
+	std::vector<TIndexRange> runs;
+	for (const TIndexRange& run : consecutiveBeamRuns(points))
+	{
+		const auto parts = splitAtPointGaps(points, run, m_options.max_point_gap_m);
+		runs.insert(runs.end(), parts.begin(), parts.end());
+	}
+	const double step_rad = points.beam_step_rad > 0 ? points.beam_step_rad : M_PI / 180;
+	const size_t k = static_cast<size_t>(std::max(1.0, std::round(m_options.derivative_step_rad / step_rad)));
+	const double floor = m_options.min_peak * step_rad / (M_PI / 180);  // min_peak is given for 1 deg beams
 	std::vector<double> d2;
 	std::vector<bool> has;
 	logRangeSecondDerivative(points, runs, k, d2, has);
@@ -85,7 +94,7 @@ std::vector<TIndexRange> CDerivativeLineExtractor::segmentByDerivative(const TSc
 	// Two passes, each normalised by its own largest peak (see the header:
 	// one depth jump must not hide the corners).
 	for (int pass = 0; pass < 2; ++pass)
-		peakPass(d2, runs, k, m_options.peak_threshold, m_options.min_peak, excluded, startsPiece);
+		peakPass(d2, runs, k, m_options.peak_threshold, floor, excluded, startsPiece);
 
 	std::vector<TIndexRange> pieces;
 	for (size_t i = 0; i < points.size(); ++i)
@@ -109,10 +118,16 @@ TLineSegmentList CDerivativeLineExtractor::extract(const mrpt::obs::CObservation
 	TMergeRule rule;
 	rule.max_angle_rad = m_options.merge_angle_rad;
 	rule.max_rms_growth = m_options.merge_rms_growth;
+	rule.max_rms_m = m_options.max_fit_rms_m;
 	rule.max_gap_ratio = m_options.gap_ratio;
+	rule.max_gap_m = m_options.max_point_gap_m;
 	mergeCollinearNeighbours(points, ranges, rule);
 	refineBoundaries(points, ranges);
-	return segmentsFromRanges(points, ranges, static_cast<size_t>(m_options.min_points), m_options.min_length_m);
+	TLineSegmentList lines =
+		segmentsFromRanges(points, ranges, static_cast<size_t>(m_options.min_points), m_options.min_length_m,
+						   m_options.max_fit_rms_m);
+	markOccludedEnds(scan, lines);
+	return lines;
 }
 
 }  // namespace hslam::features

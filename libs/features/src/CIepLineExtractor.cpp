@@ -23,7 +23,10 @@ TLineSegmentList CIepLineExtractor::extract(const mrpt::obs::CObservation2DRange
 	rule.max_gap_m = m_options.max_point_gap_m;
 	mergeCollinearNeighbours(points, ranges, rule);
 	refineBoundaries(points, ranges);
-	return segmentsFromRanges(points, ranges, static_cast<size_t>(m_options.min_points), m_options.min_length_m);
+	TLineSegmentList lines =
+		segmentsFromRanges(points, ranges, static_cast<size_t>(m_options.min_points), m_options.min_length_m);
+	markOccludedEnds(scan, lines);
+	return lines;
 }
 
 }  // namespace hslam::features

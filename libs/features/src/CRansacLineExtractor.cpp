@@ -71,13 +71,27 @@ TLineSegmentList CRansacLineExtractor::extract(const mrpt::obs::CObservation2DRa
 										   static_cast<size_t>(m_options.min_inliers));
 	}
 
-	std::vector<bool> taken(n, false);
-	for (const auto& [count, line] : lines)
+	// each point goes to the nearest detected line within the threshold
+	// (MRPT hands points to the first line that claims them, which gives a
+	// wall's corner point to the neighbouring wall when that one was found first)
+	std::vector<std::vector<size_t>> members(lines.size());
+	for (size_t i = 0; i < n; ++i)
 	{
-		std::vector<size_t> inliers;
-		for (size_t i = 0; i < n; ++i)
-			if (!taken[i] && line.distance(points.xy[i]) <= m_options.distance_threshold_m) inliers.push_back(i);
-		for (size_t i : inliers) taken[i] = true;
+		double best = m_options.distance_threshold_m;
+		size_t bestLine = lines.size();
+		for (size_t k = 0; k < lines.size(); ++k)
+		{
+			const double d = lines[k].second.distance(points.xy[i]);
+			if (d <= best)
+			{
+				best = d;
+				bestLine = k;
+			}
+		}
+		if (bestLine < lines.size()) members[bestLine].push_back(i);
+	}
+	for (const auto& inliers : members)
+	{
 		for (const auto& piece : cutAtGaps(points, inliers, m_options.max_point_gap_m))
 		{
 			if (piece.size() < static_cast<size_t>(std::max(2, m_options.min_points))) continue;
@@ -90,6 +104,7 @@ TLineSegmentList CRansacLineExtractor::extract(const mrpt::obs::CObservation2DRa
 	}
 	std::sort(out.begin(), out.end(),
 			  [](const TLineSegment& a, const TLineSegment& b) { return a.first_beam < b.first_beam; });
+	markOccludedEnds(scan, out);
 	return out;
 }
 

@@ -20,7 +20,7 @@ std::optional<std::pair<double, double>> TLineSegment::slopeIntercept() const
 {
 	// x cos(a) + y sin(a) = rho  =>  y = -cot(a) x + rho / sin(a)
 	const double s = std::sin(alpha_rad);
-	if (std::abs(s) < 1e-9) return std::nullopt;
+	if (std::abs(s) < 1e-6) return std::nullopt;  // |slope| > 1e6: lines fitted to float ranges are never more vertical
 	return std::make_pair(-std::cos(alpha_rad) / s, rho_m / s);
 }
 

@@ -22,6 +22,7 @@ TScanPoints validScanPoints(const mrpt::obs::CObservation2DRangeScan& scan)
 	out.xy.reserve(n);
 	out.range_m.reserve(n);
 	out.beam.reserve(n);
+	if (n > 1) out.beam_step_rad = scan.aperture / static_cast<double>(n - 1);
 	for (size_t i = 0; i < n; ++i)
 	{
 		if (!isValidBeam(scan, i)) continue;

@@ -4,8 +4,9 @@
  *
  * MRPT returns infinite lines (and their inlier counts), found one after the
  * other, each removing its inliers. They are turned into segments here: the
- * valid points are given, in MRPT's order, to the first line they lie within
- * distance_threshold_m of; each line's points, in beam order, are cut where
+ * valid points are given to the nearest line within distance_threshold_m
+ * (MRPT gives each point to the first line found, so a corner point could go
+ * to the wrong wall); each line's points, in beam order, are cut where
  * two consecutive ones are more than max_point_gap_m apart (so one infinite
  * line through two separate walls, or through a wall and a stray point on
  * its extension, does not become one segment); each piece is refitted by TLS

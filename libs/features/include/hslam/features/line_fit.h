@@ -28,6 +28,14 @@ struct TLineFit
 	mrpt::math::TPoint2D centroid;
 	double rms_m = 0;  //!< RMS orthogonal residual
 	double max_residual_m = 0;  //!< largest |orthogonal residual|
+	/** Covariance of (rho, alpha) from the residuals (first order, isotropic
+	 * point noise sigma^2 = sum d^2 / (n - 2), 0 for n = 2):
+	 * var(alpha) = sigma^2 / S with S = sum of squared along-line offsets from
+	 * the centroid, var(rho) = sigma^2 / n + t^2 var(alpha),
+	 * cov(rho, alpha) = t var(alpha), t = centroid's along-line coordinate
+	 * (c . (-sin alpha, cos alpha)). */
+	double var_rho_m2 = 0, var_alpha_rad2 = 0, cov_rho_alpha_m_rad = 0;
+	double normal_x = 1, normal_y = 0;  //!< cos(alpha), sin(alpha)
 
 	/** Signed orthogonal distance of p to the line (m). */
 	double distanceTo(const mrpt::math::TPoint2D& p) const;
@@ -37,6 +45,8 @@ struct TLineFit
 
 /** TLS fit of all points. */
 TLineFit fitLineTotalLeastSquares(const std::vector<mrpt::math::TPoint2D>& points);
+/** TLS fit of the n points starting at `points`. */
+TLineFit fitLineTotalLeastSquares(const mrpt::math::TPoint2D* points, size_t n);
 
 /** Normal form (rho >= 0, alpha in (-pi, pi]) of the line through `point`
  * with unit normal (cos(normal_rad), sin(normal_rad)). */

@@ -11,6 +11,7 @@
 #include <mrpt/math/TPoint2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -21,6 +22,7 @@ struct TScanPoints
 	std::vector<mrpt::math::TPoint2D> xy;  //!< robot frame (m), in beam order
 	std::vector<double> range_m;  //!< the measured range of each point
 	std::vector<size_t> beam;  //!< index of each point's beam in the scan
+	double beam_step_rad = M_PI / 180;  //!< angle between neighbouring beams (aperture / (n - 1))
 
 	size_t size() const { return xy.size(); }
 };

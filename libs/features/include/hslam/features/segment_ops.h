@@ -32,7 +32,8 @@ std::vector<TIndexRange> splitAtPointGaps(const TScanPoints& points, const TInde
 
 /** For neighbouring ranges of consecutive beams: the last point of the first
  * range and the first point of the second move to the neighbour if they lie
- * closer to its fitted line (corner points end up on the wall they belong to). */
+ * closer to its fitted line and within that fit's largest residual (at least
+ * 1 cm) - corner points end up on the wall they belong to, stray points stay. */
 void refineBoundaries(const TScanPoints& points, std::vector<TIndexRange>& ranges);
 
 /** Noise floor of the RMS-growth merge test (m). */
@@ -51,6 +52,7 @@ struct TMergeRule
 	/** Merged fit RMS <= max_rms_growth * (pooled RMS of the two fits) + kMergeRmsFloor_m,
 	 * i.e. merging must not make the fit much worse than the pieces' own noise; <= 0: off. */
 	double max_rms_growth = 0;
+	double max_rms_m = 0;  //!< hard limit on the merged fit's RMS (growth can chain); <= 0: off
 	double max_gap_ratio = 0;  //!< thesis eq. 56: (aa + a + b) / (a + b) must not exceed this; <= 0: off
 	double max_gap_m = 0;  //!< distance between the facing end points; <= 0: off
 };
@@ -67,8 +69,20 @@ double gapCriterion(const TScanPoints& points, const TIndexRange& first, const T
  * best merged fit first, until no pair passes. */
 void mergeCollinearNeighbours(const TScanPoints& points, std::vector<TIndexRange>& ranges, const TMergeRule& rule);
 
-/** Segments of the ranges with at least min_points points and length >= min_length_m, in beam order. */
+/** Segments of the ranges with at least min_points points, length >=
+ * min_length_m and fit RMS <= max_rms_m (<= 0: any), in beam order. */
 TLineSegmentList segmentsFromRanges(const TScanPoints& points, const std::vector<TIndexRange>& ranges,
-									size_t min_points, double min_length_m);
+									size_t min_points, double min_length_m, double max_rms_m = 0);
+
+/** Sets p0_occluded / p1_occluded of each line (see line_segment.h) from the
+ * beams first_beam - 1 and last_beam + 1 of `scan`: occluded if that beam is
+ * invalid or outside the scan, if it does not meet the line ahead, or if its
+ * range is shorter than the line's along it by more than
+ * tol = kOcclusionTolerance_m + 3 fit_rms AND its point is farther than
+ * 2 beam spacings + tol from the segment's end point (a concave corner, where
+ * the next wall starts right at the end point, is a real end). */
+void markOccludedEnds(const mrpt::obs::CObservation2DRangeScan& scan, TLineSegmentList& lines);
+
+constexpr double kOcclusionTolerance_m = 0.05;
 
 }  // namespace hslam::features
