@@ -116,7 +116,7 @@ TEST(LineExtractorFactory, SavedOptionsLoadBackIdentically)
 
 TEST(LineExtractorFactory, DocumentedIniListsEveryKeyWithItsDefault)
 {
-	const mrpt::config::CConfigFile file(std::string(HSLAM_SOURCE_DIR) + "/config_ini/line_extraction.ini");
+	const mrpt::config::CConfigFile file(std::string(HSLAM_SOURCE_DIR) + "/config_ini/hslam-default.ini");
 	EXPECT_EQ(file.read_string("line_extraction", "method", ""), "derivative");
 	auto compare = [&](auto defaults, const std::string& section) {
 		mrpt::config::CConfigFileMemory saved;
