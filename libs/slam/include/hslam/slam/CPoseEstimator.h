@@ -49,7 +49,7 @@ class CPoseEstimator
 
 struct TPoseEstimationOptions
 {
-	std::string method = "icp";  //!< "odometry", "lines", "icp" or "lines+icp" (measured best: icp)
+	std::string method = "lines+icp";  //!< "odometry", "lines", "icp" or "lines+icp" (default: best on the real logs)
 	double match_every_m = 0.1;  //!< run the matcher after this much travel (thesis 4.5.3: 0.1 m)...
 	double match_every_rad = 5.0 * M_PI / 180.0;  //!< ...or this much rotation (thesis: 5 deg)
 	/** ICP against the keyframe map runs at most this often (icp and
