@@ -30,6 +30,22 @@ CTiledOccupancyGrid::CTiledOccupancyGrid(const TOptions& options)
 		throw std::invalid_argument("CTiledOccupancyGrid: max_occupied_probability must be in (0.5, 1)");
 }
 
+CTiledOccupancyGrid::CTiledOccupancyGrid(const CTiledOccupancyGrid& o)
+	: m_options(o.m_options),
+	  m_geometry(o.m_geometry),
+	  m_clampLogOdds(o.m_clampLogOdds),
+	  m_clampCellUnits(o.m_clampCellUnits),
+	  m_creationOrder(o.m_creationOrder)
+{
+	for (const auto& kv : o.m_tiles) m_tiles.emplace(kv.first, std::make_unique<CTile>(*kv.second));
+}
+
+CTiledOccupancyGrid& CTiledOccupancyGrid::operator=(const CTiledOccupancyGrid& o)
+{
+	if (this != &o) *this = CTiledOccupancyGrid(o);
+	return *this;
+}
+
 CTile& CTiledOccupancyGrid::tileFor(const TTileIndex& t)
 {
 	if (m_cachedTile && m_cachedIndex == t) return *m_cachedTile;

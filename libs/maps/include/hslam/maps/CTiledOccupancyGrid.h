@@ -91,6 +91,11 @@ class CTiledOccupancyGrid
 
 	CTiledOccupancyGrid() : CTiledOccupancyGrid(TOptions()) {}
 	explicit CTiledOccupancyGrid(const TOptions& options);
+	/** Deep copies (MRPT maps must be clonable). */
+	CTiledOccupancyGrid(const CTiledOccupancyGrid& o);
+	CTiledOccupancyGrid& operator=(const CTiledOccupancyGrid& o);
+	CTiledOccupancyGrid(CTiledOccupancyGrid&&) = default;
+	CTiledOccupancyGrid& operator=(CTiledOccupancyGrid&&) = default;
 
 	const TOptions& options() const { return m_options; }
 	const CTiledGridGeometry& geometry() const { return m_geometry; }
