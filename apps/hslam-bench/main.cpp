@@ -3,6 +3,7 @@
  * table and then key=value lines for scripts.
  *
  *   hslam-bench grid [--rawlog FILE ...] [--repetitions N]
+ *   hslam-bench sonar [--repetitions N]     (simulated runs; images into ./hslam-bench-sonar/)
  */
 #include "bench_common.h"
 
@@ -12,8 +13,8 @@
 
 int main(int argc, char** argv)
 {
-	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid)", ' ', "0.1");
-	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid", true, "", "suite", cmd);
+	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, sonar)", ' ', "0.1");
+	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid | sonar", true, "", "suite", cmd);
 	TCLAP::MultiArg<std::string> rawlogs("r", "rawlog",
 										 "rawlog(s) with laser scans and odometry (default: MRPT's sample rawlog)",
 										 false, "file", cmd);
@@ -25,7 +26,8 @@ int main(int argc, char** argv)
 		std::vector<std::string> inputs = rawlogs.getValue();
 		if (inputs.empty()) inputs.push_back(hslam::bench::kMrptSampleRawlog);
 		if (suite.getValue() == "grid") return hslam::bench::runGridSuite(inputs, std::max(1, repetitions.getValue()));
-		std::cerr << "hslam-bench: unknown suite '" << suite.getValue() << "' (available: grid)\n";
+		if (suite.getValue() == "sonar") return hslam::bench::runSonarSuite(std::max(1, repetitions.getValue()), "hslam-bench-sonar");
+		std::cerr << "hslam-bench: unknown suite '" << suite.getValue() << "' (available: grid, sonar)\n";
 		return 1;
 	}
 	catch (const TCLAP::ArgException& e)

@@ -3,6 +3,8 @@
 #include <hslam/maps/CTiledOccupancyGridMap2D.h>
 #include <hslam/maps/grid_comparison.h>
 #include <hslam/testing/temp_dir.h>
+#include <hslam/testing/test_paths.h>
+#include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/io/CFileGZOutputStream.h>
@@ -223,4 +225,29 @@ TEST(TiledMap, SparseLargeBuildingAllocatesOnlyTouchedTiles)
 	EXPECT_GE(tiles, 28u);
 	EXPECT_EQ(bytes, tiles * 200u * 200u * sizeof(TLogOddsCell));
 	EXPECT_LT(bytes, fullSquareBytes / 3);
+}
+
+TEST(TiledMap, MrptCreatesTheMapFromTheShippedIni)
+{
+	registerTiledMapClasses();
+	mrpt::config::CConfigFile cfg(std::string(HSLAM_SOURCE_DIR) + "/config_ini/tiled-map-mrpt.ini");
+	mrpt::maps::TSetOfMetricMapInitializers inits;
+	inits.loadFromConfigFile(cfg, "MappingApplication");
+	mrpt::maps::CMultiMetricMap multi;
+	multi.setListOfMaps(inits);
+	const auto map = multi.mapByClass<CTiledOccupancyGridMap2D>();
+	ASSERT_TRUE(map);
+	// The shipped file states the defaults: the created map equals a default one.
+	EXPECT_EQ(map->optionsAsIni(), CTiledOccupancyGridMap2D().optionsAsIni());
+}
+
+TEST(TiledMap, DefaultIniSonarSectionMatchesTheOptions)
+{
+	mrpt::config::CConfigFile cfg(std::string(HSLAM_SOURCE_DIR) + "/config_ini/hslam-default.ini");
+	CSonarGridInserter::TOptions o;
+	hslam::common::loadOptions(o, cfg, "sonar_model");  // throws on undocumented / unknown keys
+	mrpt::config::CConfigFileMemory a, b;
+	hslam::common::saveOptions(o, a, "s");
+	hslam::common::saveOptions(CSonarGridInserter::TOptions(), b, "s");
+	EXPECT_EQ(a.getContent(), b.getContent());  // the file documents the defaults
 }

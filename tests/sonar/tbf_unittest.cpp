@@ -4,6 +4,8 @@
 #include <hslam/sim/scene.h>
 #include <hslam/sonar/CTbfCornerDetector.h>
 #include <hslam/sonar/tbf_geometry.h>
+#include <hslam/testing/test_paths.h>
+#include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
 #include <cmath>
@@ -210,4 +212,15 @@ TEST(TbfCornerDetector, OptionsFromIni)
 	EXPECT_NEAR(o.min_intersection_angle_rad, 40 * M_PI / 180, 1e-12);
 	cfg.write("tbf", "window_columns", "1");
 	EXPECT_THROW(hslam::common::loadOptions(o, cfg, "tbf"), hslam::common::config_error);
+}
+
+TEST(TbfCornerDetector, DefaultIniSectionMatchesTheOptions)
+{
+	mrpt::config::CConfigFile cfg(std::string(HSLAM_SOURCE_DIR) + "/config_ini/hslam-default.ini");
+	CTbfCornerDetector::TOptions o;
+	hslam::common::loadOptions(o, cfg, "tbf");
+	mrpt::config::CConfigFileMemory a, b;
+	hslam::common::saveOptions(o, a, "s");
+	hslam::common::saveOptions(CTbfCornerDetector::TOptions(), b, "s");
+	EXPECT_EQ(a.getContent(), b.getContent());
 }

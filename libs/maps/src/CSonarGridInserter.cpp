@@ -159,7 +159,11 @@ size_t CSonarGridInserter::insertStandard(CTiledOccupancyGrid& grid, const TSona
 		const double x = r.sensor.x + outer * std::cos(a), y = r.sensor.y + outer * std::sin(a);
 		xMin = std::min(xMin, x), xMax = std::max(xMax, x), yMin = std::min(yMin, y), yMax = std::max(yMax, y);
 	}
-	const TGlobalCell lo = geo.cellOf(xMin, yMin), hi = geo.cellOf(xMax, yMax);
+	TCellBounds box{geo.cellOf(xMin, yMin).gx, geo.cellOf(xMax, yMax).gx, geo.cellOf(xMin, yMin).gy,
+					geo.cellOf(xMax, yMax).gy};
+	if (m_options.standard_scans_whole_tile)  // the thesis' loop over the whole 200 x 200 map
+		box.include(geo.tileBounds(geo.tileOf(geo.cellOf(r.sensor.x, r.sensor.y))));
+	const TGlobalCell lo{box.gxMin, box.gyMin}, hi{box.gxMax, box.gyMax};
 
 	// Every cell in the cone (thesis 4.6.3 pseudocode): region 1 or region 2.
 	size_t cells = 0;

@@ -20,7 +20,9 @@
  *             O((r / res)^2 beta) cells. The thesis looped over every cell of
  *             the 200 x 200 map for each sonar; here only the cone's bounding
  *             box is scanned (same result, far fewer wasted tests), so our
- *             speed-up of fast over standard is smaller than the thesis' 25-30x.
+ *             speed-up of fast over standard is smaller than the thesis' 25-30x;
+ *             standard_scans_whole_tile = true reproduces the thesis' loop
+ *             (every cell of the sensor's tile is tested; same map, for timing).
  *
  * Deviation from eq. 86-87: taken literally, eq. 87 (P = s x Max_occupied)
  * gives P < 0.5 (evidence of FREE space) for the arc cells with s < 0.51, and
@@ -82,6 +84,7 @@ class CSonarGridInserter
 		double weight = 0.25;  //!< log-odds weight of sonar updates relative to the laser (1)
 		double default_cone_aperture_rad = 23.0 * M_PI / 180.0;  //!< used when an observation has none
 																  //!< (appendix G.3: +-11.5 deg)
+		bool standard_scans_whole_tile = false;  //!< standard model: test every cell of the sensor's tile
 
 		template <class V>
 		void visit(V& v)
@@ -93,6 +96,7 @@ class CSonarGridInserter
 			v.real("max_occupied_probability", max_occupied_probability, 0.51, 0.9999);
 			v.real("weight", weight, 0.0, 1.0);
 			v.degrees("default_cone_aperture_deg", default_cone_aperture_rad, 1.0, 90.0);
+			v.flag("standard_scans_whole_tile", standard_scans_whole_tile);
 		}
 	};
 
