@@ -13,7 +13,9 @@
  * Maps are built with the TRUE poses (the models are measured, not the
  * localisation). Ground truth map: a cell is occupied if a wall or a circle
  * passes through it. Scores (same for every map):
- *   agreement      = correct known cells / known cells, where an occupied
+ *   agreement      = correct known cells / known cells (scored: the free
+ *                    space reachable from the start and the cells next to
+ *                    obstacles; box interiors are not scored), where an occupied
  *                    cell is correct if a true obstacle is within one cell and a
  *                    free cell is correct if its own cell holds no obstacle;
  *   false occupied = occupied cells with no obstacle within one cell;
@@ -34,6 +36,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <unordered_set>
 
 namespace hslam::bench
@@ -110,6 +113,7 @@ using TCellSet = std::unordered_set<maps::TGlobalCell, TCellHash>;
 struct TTruth
 {
 	TCellSet occupied, dilated;  //!< obstacle cells; and every cell within one cell of one
+	TCellSet reachable;  //!< free cells connected to the start (not inside boxes or outside the building)
 	TCellSet nearPath;  //!< obstacle cells within 3 m of the path
 };
 
@@ -134,6 +138,19 @@ TTruth groundTruth(const TSimRun& run, const maps::CTiledGridGeometry& geo)
 	for (const auto& c : t.occupied)
 		for (int dy = -1; dy <= 1; ++dy)
 			for (int dx = -1; dx <= 1; ++dx) t.dilated.insert({c.gx + dx, c.gy + dy});
+	// Flood fill of free space from the start (4-connected, inside the bounds + 1 m).
+	const auto b = run.scene.world.bounds();
+	const auto lo = geo.cellOf(b.min_x - 1, b.min_y - 1), hi = geo.cellOf(b.max_x + 1, b.max_y + 1);
+	std::vector<maps::TGlobalCell> stack{geo.cellOf(run.path.front().x, run.path.front().y)};
+	while (!stack.empty())
+	{
+		const maps::TGlobalCell c = stack.back();
+		stack.pop_back();
+		if (c.gx < lo.gx || c.gx > hi.gx || c.gy < lo.gy || c.gy > hi.gy) continue;
+		if (t.occupied.count(c) || !t.reachable.insert(c).second) continue;
+		stack.push_back({c.gx + 1, c.gy}), stack.push_back({c.gx - 1, c.gy});
+		stack.push_back({c.gx, c.gy + 1}), stack.push_back({c.gx, c.gy - 1});
+	}
 	for (const auto& c : t.occupied)
 	{
 		const auto p = geo.cellCentre(c);
@@ -166,6 +183,8 @@ TTruthScore scoreAgainstTruth(const maps::TCellBounds& b, const TTruth& truth, C
 			const maps::TGlobalCell c{gx, gy};
 			const maps::ECellClass k = classify(c);
 			if (k == maps::ECellClass::unknown) continue;
+			// Cells inside closed obstacles or outside the building are not scored.
+			if (!truth.reachable.count(c) && !truth.dilated.count(c)) continue;
 			++s.known;
 			if (k == maps::ECellClass::occupied)
 			{
@@ -424,10 +443,19 @@ int runSonarSuite(int repetitions, const std::string& outDir)
 		maps::CLaserGridInserter laser;  // thesis defaults: long beams dropped
 		for (const auto& s : run.scans) laser.insert(laserMap, s.pose, s.scan);
 		row(run.name, "laser", run.scans.size(), 0.0, scoreOurs(laserMap, truth));
-		const maps::CSonarGridInserter fusedSonar;  // defaults: fast, weight 0.25
+		const maps::CSonarGridInserter fusedSonar;  // defaults: fast, weight 0.1
 		for (const auto& s : run.scans) laser.insert(fusedMap, s.pose, s.scan);
 		insertSonars(fusedMap, run.sonars, fusedSonar);
 		row(run.name, "laser+sonar", run.scans.size() + n, 0.0, scoreOurs(fusedMap, truth));
+		for (const double w : {0.25, 0.5})
+		{
+			maps::CTiledOccupancyGrid g;
+			for (const auto& s : run.scans) laser.insert(g, s.pose, s.scan);
+			insertSonars(g, run.sonars, maps::CSonarGridInserter(sonarOptions("fast", w)));
+			std::ostringstream name;
+			name << "  sonar w=" << w;
+			row(run.name, name.str(), run.scans.size() + n, 0.0, scoreOurs(g, truth));
+		}
 		// The same with the laser also clearing up to 3 m along its long beams.
 		maps::CTiledOccupancyGrid fusedClearMap;
 		maps::CLaserGridInserter clearingLaser(ourLaserOptions());
@@ -463,7 +491,7 @@ int runSonarSuite(int repetitions, const std::string& outDir)
 
 	// ---------------------------------------------------------- 2. laser tiled vs MRPT
 	std::cout << "   (whole tile) = standard model testing every cell of the sensor's 200x200 tile per reading, as the"
-				 " thesis' loop (4.6.3)\n   * = laser long beams clear free space up to 3 m (insert_free_beyond_range)\n";
+				 " thesis' loop (4.6.3)\n   laser+sonar = fused, sonar weight 0.1 (default); sonar w = other weights\n   * = laser long beams clear free space up to 3 m (insert_free_beyond_range)\n";
 	std::cout << "\n2. Laser maps, tiled grid vs MRPT COccupancyGridMap2D (same scans, 3 m range), against ground truth\n"
 			  << std::left << std::setw(10) << "run" << std::right << std::setw(13) << "ours agree" << std::setw(13)
 			  << "MRPT agree" << std::setw(12) << "ours fo" << std::setw(12) << "MRPT fo" << std::setw(11) << "ours us"
@@ -502,6 +530,7 @@ int runSonarSuite(int repetitions, const std::string& outDir)
 	const std::vector<TVariant> variants{{"in-cone only (basic TBF)", false, false, 1.0},
 										 {"+ stability 20 deg", true, false, 1.0},
 										 {"+ stability + clustering", true, true, 1.0},
+										 {"clustering + cone-rim, no stability", false, true, 0.8},
 										 {"+ cone-rim rejection (default)", true, true, 0.8}};
 	std::cout << "\n3. TBF sonar corners vs true corners (within 0.2 m); observable = in some cone within 3 m, in sight\n"
 			  << std::left << std::setw(34) << "filters" << std::right << std::setw(9) << "corners" << std::setw(11)

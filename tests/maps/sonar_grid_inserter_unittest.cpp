@@ -151,7 +151,7 @@ TEST(SonarGridInserter, FusionFavoursTheLaserButGlassStillAppears)
 	// wall 4 m behind is beyond its 3 m range, so it is not inserted); the
 	// sonar echoes at 1.0 m. A solid wall at y = 1.0 m is seen by both.
 	CTiledOccupancyGrid grid;
-	CSonarGridInserter sonar;  // defaults: fast, weight 0.25
+	CSonarGridInserter sonar;  // defaults: fast, weight 0.1
 	CLaserGridInserter laser;
 	mrpt::obs::CObservation2DRangeScan scan;
 	scan.aperture = static_cast<float>(M_PI);
@@ -162,7 +162,7 @@ TEST(SonarGridInserter, FusionFavoursTheLaserButGlassStillAppears)
 	TSonarReading toWall = readingAt1m();
 	toWall.sensor.phi = M_PI / 2;
 	toWall.range_m = 1.6;  // a specular reading: the sonar claims free space through the wall
-	for (int k = 0; k < 10; ++k)
+	for (int k = 0; k < 20; ++k)
 	{
 		laser.insert(grid, mrpt::poses::CPose2D(0.05, 0.05, 0), scan);
 		sonar.insert(grid, readingAt1m());

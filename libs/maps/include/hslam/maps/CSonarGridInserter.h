@@ -81,7 +81,7 @@ class CSonarGridInserter
 		bool insert_free_beyond_range = false;  //!< insert region 2 of longer readings up to max_range_m
 		double arc_half_width_m = 0.15;  //!< region 1 = |d - r| <= this (appendix G.3: 150 mm)
 		double max_occupied_probability = 0.98;  //!< Max_occupied of eq. 87
-		double weight = 0.25;  //!< log-odds weight of sonar updates relative to the laser (1)
+		double weight = 0.1;  //!< log-odds weight of sonar updates relative to the laser (1)
 		double default_cone_aperture_rad = 23.0 * M_PI / 180.0;  //!< used when an observation has none
 																  //!< (appendix G.3: +-11.5 deg)
 		bool standard_scans_whole_tile = false;  //!< standard model: test every cell of the sensor's tile
