@@ -11,6 +11,7 @@
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/maps/CMultiMetricMap.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservationRange.h>
 #include <mrpt/serialization/CArchive.h>
 
 #include <cmath>
@@ -109,6 +110,18 @@ TEST(TiledMap, MrptCreatesTheMapFromAnIniDefinition)
 	multi.insertObservation(corridorScan(pose, 1.0, true), mrpt::poses::CPose3D(pose));
 	EXPECT_GT(map->grid().occupancyProbability(map->grid().geometry().cellOf(0.5, 1.01)), 0.8);
 	EXPECT_LT(map->grid().occupancyProbability(map->grid().geometry().cellOf(0.5, 0.5)), 0.4);
+	// A sonar observation goes through the configured (standard) sonar model.
+	mrpt::obs::CObservationRange sonar;
+	sonar.sensorConeApperture = static_cast<float>(20 * M_PI / 180);
+	mrpt::obs::CObservationRange::TMeasurement m;
+	m.sensorPose = {0.0, 0.0, 0.0, -M_PI / 2, 0.0, 0.0};  // looking at -y
+	m.sensedDistance = 2.0f;
+	sonar.sensedData.push_back(m);
+	const auto before = map->grid().logOdds(map->grid().geometry().cellOf(0.1, -2.0));
+	EXPECT_TRUE(map->insertObservation(sonar, mrpt::poses::CPose3D(0.025, 0.025, 0, 0, 0, 0)));
+	EXPECT_NEAR(map->grid().logOdds(map->grid().geometry().cellOf(0.1, -2.0)) - before,
+				0.3 * std::log(map->insertionOptions.sonar.max_occupied_probability / 0.02), 1.5);
+	EXPECT_GT(map->grid().logOdds(map->grid().geometry().cellOf(0.1, -2.0)), 0.3);
 }
 
 TEST(TiledMap, IniDefinitionWithUnknownKeyNamesIt)

@@ -40,6 +40,31 @@ CTiledOccupancyGrid::CTiledOccupancyGrid(const CTiledOccupancyGrid& o)
 	for (const auto& kv : o.m_tiles) m_tiles.emplace(kv.first, std::make_unique<CTile>(*kv.second));
 }
 
+CTiledOccupancyGrid::CTiledOccupancyGrid(CTiledOccupancyGrid&& o) noexcept
+	: m_options(o.m_options),
+	  m_geometry(o.m_geometry),
+	  m_clampLogOdds(o.m_clampLogOdds),
+	  m_clampCellUnits(o.m_clampCellUnits),
+	  m_tiles(std::move(o.m_tiles)),
+	  m_creationOrder(std::move(o.m_creationOrder))
+{
+	o.clear();
+}
+
+CTiledOccupancyGrid& CTiledOccupancyGrid::operator=(CTiledOccupancyGrid&& o) noexcept
+{
+	if (this == &o) return *this;
+	m_options = o.m_options;
+	m_geometry = o.m_geometry;
+	m_clampLogOdds = o.m_clampLogOdds;
+	m_clampCellUnits = o.m_clampCellUnits;
+	m_tiles = std::move(o.m_tiles);
+	m_creationOrder = std::move(o.m_creationOrder);
+	m_cachedTile = nullptr;
+	o.clear();
+	return *this;
+}
+
 CTiledOccupancyGrid& CTiledOccupancyGrid::operator=(const CTiledOccupancyGrid& o)
 {
 	if (this != &o) *this = CTiledOccupancyGrid(o);

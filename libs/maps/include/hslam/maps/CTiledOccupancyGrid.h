@@ -94,8 +94,9 @@ class CTiledOccupancyGrid
 	/** Deep copies (MRPT maps must be clonable). */
 	CTiledOccupancyGrid(const CTiledOccupancyGrid& o);
 	CTiledOccupancyGrid& operator=(const CTiledOccupancyGrid& o);
-	CTiledOccupancyGrid(CTiledOccupancyGrid&&) = default;
-	CTiledOccupancyGrid& operator=(CTiledOccupancyGrid&&) = default;
+	/** Moves leave the source empty (its tile cache reset). */
+	CTiledOccupancyGrid(CTiledOccupancyGrid&& o) noexcept;
+	CTiledOccupancyGrid& operator=(CTiledOccupancyGrid&& o) noexcept;
 
 	const TOptions& options() const { return m_options; }
 	const CTiledGridGeometry& geometry() const { return m_geometry; }
