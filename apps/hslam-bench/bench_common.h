@@ -61,4 +61,8 @@ int runGridSuite(const std::vector<std::string>& rawlogs, int repetitions);
 /** Sonar models, TBF and laser tiled-vs-MRPT on simulated runs; images into `outDir`. */
 int runSonarSuite(int repetitions, const std::string& outDir);
 
+/** Line extractors on thesis table 3 scenes and real scans (bench_lines.cpp);
+ * `logs` empty: ../shared/datasets/carmen/{intel,aces,csail}-corrected.log.gz. */
+int runLinesSuite(const std::vector<std::string>& logs, int repetitions);
+
 }  // namespace hslam::bench

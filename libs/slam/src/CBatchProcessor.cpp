@@ -5,9 +5,14 @@
 #include <hslam/eval/evaluation_json.h>
 #include <hslam/eval/evaluation_table.h>
 #include <hslam/slam/CBatchProcessor.h>
+#include <hslam/slam/pose_plots.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
+#include <array>
+#include <cstdio>
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <fstream>
 
 namespace hslam::slam
@@ -35,6 +40,7 @@ TBatchResult CBatchProcessor::run()
 	TOutputOptions outputOptions;
 	common::loadOptions(outputOptions, cfg, "output");
 	std::filesystem::create_directories(m_request.output_dir);
+	addDebugFrameWriter(pipeline, outputOptions.debug_frames_every);
 
 	TBatchResult result;
 	readRawlog(pipeline, result);
@@ -71,6 +77,23 @@ void CBatchProcessor::readRawlog(CMappingPipeline& pipeline, TBatchResult& resul
 	if (m_request.show_progress) progress.finish();
 }
 
+void CBatchProcessor::addDebugFrameWriter(CMappingPipeline& pipeline, int every)
+{
+	if (every <= 0) return;
+	const std::string dir = m_request.output_dir + "/frames";
+	std::filesystem::create_directories(dir);
+	auto counter = std::make_shared<size_t>(0);
+	pipeline.addEstimateObserver([dir, every, counter](const mrpt::obs::CObservation2DRangeScan& scan,
+													   const TPoseEstimate& estimate) {
+		const size_t index = (*counter)++;
+		if (index % static_cast<size_t>(every) != 0) return;
+		char name[32];
+		std::snprintf(name, sizeof(name), "/frame_%06zu.png", index);
+		if (!renderScanDebugImage(scan, estimate).saveToFile(dir + name))
+			throw std::runtime_error(dir + name + ": cannot write image");
+	});
+}
+
 void CBatchProcessor::writeEffectiveConfig(const CMappingPipeline& pipeline, const TOutputOptions& outputOptions)
 {
 	mrpt::config::CConfigFileMemory effective;
@@ -92,13 +115,34 @@ void CBatchProcessor::printSummary(const CMappingPipeline& pipeline, const TBatc
 		  << "Laser scans used: " << c.laser_scans << " (ignored by label: " << c.laser_scans_ignored << ")\n"
 		  << "Odometry:         " << c.odometry_readings << " readings, " << c.odometry_gaps << " gaps\n"
 		  << "Tiles:            " << pipeline.grid().tileCount() << " (" << pipeline.grid().memoryBytes() / 1024
-		  << " KiB)\n\nTiming per call:\n";
+		  << " KiB)\n";
+	printMatchSummary(pipeline);
+	m_out << "\nTiming per call:\n";
 	pipeline.timer().printTable(m_out);
 	m_out << "\nResults written to " << m_request.output_dir << "/ (map.png, tiles/, map.gridmap.gz, "
 		  << "trajectory.tum, odometry.tum, timing.csv, config_used.ini)\n";
 	if (!result.input_error.empty())
 		m_err << "error: " << result.input_error << "\n"
 			  << "       results for the " << c.entries << " entries read before the fault were written.\n";
+}
+
+void CBatchProcessor::printMatchSummary(const CMappingPipeline& pipeline)
+{
+	std::map<std::string, std::array<size_t, 4>> byMethod;  // good, weak, failed, rejected
+	size_t matched = 0;
+	for (const auto& [t, e] : pipeline.estimates())
+	{
+		if (!e.matched) continue;
+		++matched;
+		auto& counts = byMethod[e.match_method.empty() ? "none" : e.match_method];
+		++counts[static_cast<size_t>(e.match_quality)];
+		if (e.match_quality != matching::EMatchQuality::failed && !e.match_accepted) ++counts[3];
+	}
+	if (matched == 0) return;
+	m_out << "Scan matches:     " << matched << " of " << pipeline.estimates().size() << " scans\n";
+	for (const auto& [method, c] : byMethod)
+		m_out << "  " << method << ": " << c[0] << " good, " << c[1] << " weak, " << c[2] << " failed, " << c[3]
+			  << " rejected by the UKF gate\n";
 }
 
 void CBatchProcessor::evaluate(const CMappingPipeline& pipeline, TBatchResult& result)

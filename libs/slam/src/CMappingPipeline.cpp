@@ -1,5 +1,6 @@
 #include <hslam/common/options_io.h>
 #include <hslam/slam/CMappingPipeline.h>
+#include <hslam/slam/CScanMatchingPoseEstimator.h>
 #include <mrpt/obs/CObservationComment.h>
 #include <mrpt/system/datetime.h>
 
@@ -21,14 +22,19 @@ common::TTimedPose2D timedPose(const mrpt::obs::CObservation& obs, const mrpt::p
 }
 }  // namespace
 
-std::vector<std::string> CMappingPipeline::sections() { return {"process", "grid", "laser_model", "pose_estimation"}; }
+std::vector<std::string> CMappingPipeline::sections()
+{
+	std::vector<std::string> s{"process", "grid", "laser_model", "pose_estimation"};
+	for (const auto& e : CScanMatchingPoseEstimator::sections()) s.push_back(e);
+	return s;
+}
 
 CMappingPipeline::CMappingPipeline(const mrpt::config::CConfigFileBase& cfg)
 	: m_processOptions(loaded<TProcessOptions>(cfg, "process")),
 	  m_poseOptions(loaded<TPoseEstimationOptions>(cfg, "pose_estimation")),
 	  m_grid(loaded<maps::CTiledOccupancyGrid::TOptions>(cfg, "grid")),
 	  m_laserInserter(loaded<maps::CLaserGridInserter::TOptions>(cfg, "laser_model")),
-	  m_estimator(createPoseEstimator(m_poseOptions, cfg))
+	  m_estimator(createPoseEstimator(m_poseOptions, cfg, m_timer))
 {
 }
 
@@ -38,6 +44,7 @@ void CMappingPipeline::saveOptions(mrpt::config::CConfigFileBase& out) const
 	common::saveOptions(m_grid.options(), out, "grid");
 	common::saveOptions(m_laserInserter.options(), out, "laser_model");
 	common::saveOptions(m_poseOptions, out, "pose_estimation");
+	m_estimator->saveOptions(out);
 }
 
 void CMappingPipeline::processEntry(const io::TRawlogEntry& entry)
@@ -91,11 +98,12 @@ void CMappingPipeline::processScan(const mrpt::obs::CObservation2DRangeScan& sca
 		increment = m_odometry.takeIncrement();
 		if (increment.known) m_deadReckoningPose = m_deadReckoningPose + increment.delta;
 	}
-	mrpt::poses::CPose2D pose;
+	TPoseEstimate estimate;
 	{
 		common::CStageTimer::CScope t(m_timer, "pose_estimation");
-		pose = m_estimator->update(increment, scan);
+		estimate = m_estimator->update(increment, scan);
 	}
+	const mrpt::poses::CPose2D pose = estimate.pose;
 	{
 		common::CStageTimer::CScope t(m_timer, "grid_update");
 		m_laserInserter.insert(m_grid, pose, scan);
@@ -103,6 +111,9 @@ void CMappingPipeline::processScan(const mrpt::obs::CObservation2DRangeScan& sca
 	m_trajectory.push_back(timedPose(scan, pose));
 	m_odometryTrajectory.push_back(timedPose(scan, m_deadReckoningPose));
 	for (const auto& observer : m_scanObservers) observer(scan, pose);
+	for (const auto& observer : m_estimateObservers) observer(scan, estimate);
+	estimate.lines.clear();
+	m_estimates.push_back({mrpt::Clock::toDouble(scan.timestamp), std::move(estimate)});
 }
 
 }  // namespace hslam::slam

@@ -1,5 +1,6 @@
 #include <hslam/maps/grid_rendering.h>
 #include <hslam/slam/batch_outputs.h>
+#include <hslam/slam/pose_plots.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/serialization/CArchive.h>
 
@@ -65,6 +66,22 @@ void writeTiming(const common::CStageTimer& timer, const std::string& dir, std::
 }
 }  // namespace
 
+void writePoseEstimatesCsv(const std::vector<CMappingPipeline::TTimedEstimate>& estimates, const std::string& path)
+{
+	std::ofstream f(path);
+	if (!f) throw std::runtime_error(path + ": cannot write");
+	f << "t_s,x_m,y_m,theta_rad,std_x_m,std_y_m,std_theta_rad,matched,match_method,match_quality,match_accepted,"
+		 "match_nis\n";
+	f.precision(9);
+	for (const auto& [t, e] : estimates)
+		f << t << ',' << e.pose.x() << ',' << e.pose.y() << ',' << e.pose.phi() << ','
+		  << std::sqrt(std::max(0.0, e.covariance(0, 0))) << ',' << std::sqrt(std::max(0.0, e.covariance(1, 1))) << ','
+		  << std::sqrt(std::max(0.0, e.covariance(2, 2))) << ',' << (e.matched ? 1 : 0) << ','
+		  << (e.matched ? e.match_method : "") << ',' << (e.matched ? matching::toString(e.match_quality) : "") << ','
+		  << (e.match_accepted ? 1 : 0) << ',' << e.match_nis << '\n';
+	if (!f) throw std::runtime_error(path + ": write failed");
+}
+
 void saveGridmapGz(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& path)
 {
 	mrpt::io::CFileGZOutputStream out;
@@ -92,6 +109,10 @@ std::vector<std::string> writeMappingOutputs(const CMappingPipeline& pipeline, c
 	written.push_back(dir + "/trajectory.tum");
 	written.push_back(dir + "/odometry.tum");
 	writeTiming(pipeline.timer(), dir, written);
+	writePoseEstimatesCsv(pipeline.estimates(), dir + "/pose_estimates.csv");
+	written.push_back(dir + "/pose_estimates.csv");
+	savePng(renderPosePlot(pipeline.estimates(), pipeline.odometryTrajectory()), dir + "/pose_plot.png");
+	written.push_back(dir + "/pose_plot.png");
 	return written;
 }
 

@@ -10,6 +10,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace hslam::features
 {
@@ -25,9 +26,17 @@ class CLineExtractor
 	virtual TLineSegmentList extract(const mrpt::obs::CObservation2DRangeScan& scan) const = 0;
 };
 
+/** The method names createLineExtractor() accepts: derivative, iep, ransac. */
+std::vector<std::string> lineExtractorMethods();
+
+/** Conventional INI section of a method's options: "line_extraction_<method>"
+ * (the `method` key itself lives in [line_extraction], read by the caller). */
+std::string lineExtractorSection(const std::string& method);
+
 /** Builds the extractor named `method` with its options read from INI section
  * `section` of `cfg` (unknown keys and out-of-range values throw
- * hslam::common::config_error). */
+ * hslam::common::config_error; so does an unknown
+ * method). Usually section = lineExtractorSection(method). */
 std::unique_ptr<CLineExtractor> createLineExtractor(const std::string& method,
 													 const mrpt::config::CConfigFileBase& cfg,
 													 const std::string& section);

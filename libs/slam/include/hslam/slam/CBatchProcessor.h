@@ -50,6 +50,8 @@ class CBatchProcessor
 	void evaluate(const CMappingPipeline& pipeline, TBatchResult& result);
 	void writeEffectiveConfig(const CMappingPipeline& pipeline, const TOutputOptions& outputOptions);
 	void printSummary(const CMappingPipeline& pipeline, const TBatchResult& result);
+	void printMatchSummary(const CMappingPipeline& pipeline);
+	void addDebugFrameWriter(CMappingPipeline& pipeline, int every);
 
 	TBatchRequest m_request;
 	std::ostream& m_out;

@@ -67,6 +67,17 @@ class CMappingPipeline
 	 * (benchmarks, debug images, live viewers). */
 	using TScanObserver = std::function<void(const mrpt::obs::CObservation2DRangeScan&, const mrpt::poses::CPose2D&)>;
 	void addScanObserver(TScanObserver observer) { m_scanObservers.push_back(std::move(observer)); }
+	/** Same, with everything the pose estimator reported (covariance, match, lines). */
+	using TEstimateObserver = std::function<void(const mrpt::obs::CObservation2DRangeScan&, const TPoseEstimate&)>;
+	void addEstimateObserver(TEstimateObserver observer) { m_estimateObservers.push_back(std::move(observer)); }
+
+	/** Per scan: time stamp (s) and the estimator's report (without lines). */
+	struct TTimedEstimate
+	{
+		double t_s = 0;
+		TPoseEstimate estimate;
+	};
+	const std::vector<TTimedEstimate>& estimates() const { return m_estimates; }
 
 	/** Writes the effective value of every pipeline option (defaults included). */
 	void saveOptions(mrpt::config::CConfigFileBase& out) const;
@@ -78,6 +89,7 @@ class CMappingPipeline
 	void processObservation(const mrpt::obs::CObservation::Ptr& obs);
 	void processScan(const mrpt::obs::CObservation2DRangeScan& scan);
 
+	common::CStageTimer m_timer;  // first: the estimator keeps a reference to it
 	TProcessOptions m_processOptions;
 	TPoseEstimationOptions m_poseOptions;
 	maps::CTiledOccupancyGrid m_grid;
@@ -86,9 +98,10 @@ class CMappingPipeline
 	COdometryTracker m_odometry;
 	mrpt::poses::CPose2D m_deadReckoningPose;
 	common::TTrajectory2D m_trajectory, m_odometryTrajectory;
-	common::CStageTimer m_timer;
+	std::vector<TTimedEstimate> m_estimates;
 	TPipelineCounters m_counters;
 	std::vector<TScanObserver> m_scanObservers;
+	std::vector<TEstimateObserver> m_estimateObservers;
 };
 
 }  // namespace hslam::slam

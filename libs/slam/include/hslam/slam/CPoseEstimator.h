@@ -1,9 +1,16 @@
 /* hslam: the pose-estimation seam of the pipeline (thesis figure 55: odometry
  * and scan matching fused in a UKF). `[pose_estimation] method` selects the
- * implementation; this foundation has "odometry" (dead reckoning, as thesis
- * 4.6.4 before the UKF was switched on). */
+ * implementation:
+ *   odometry    dead reckoning (thesis 4.6.4, before the UKF was switched on)
+ *   lines       thesis 4.4-4.5: line-feature scan matching + UKF
+ *   icp         MRPT ICP against recent keyframes + UKF
+ *   lines+icp   line matching, refined by ICP when weak (thesis future work 5.2)
+ * (see CScanMatchingPoseEstimator.h). */
 #pragma once
 
+#include <hslam/common/CStageTimer.h>
+#include <hslam/features/line_segment.h>
+#include <hslam/matching/match_result.h>
 #include <hslam/slam/COdometryTracker.h>
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
@@ -14,6 +21,19 @@
 
 namespace hslam::slam
 {
+/** What an estimator reports for one scan. */
+struct TPoseEstimate
+{
+	mrpt::poses::CPose2D pose;  //!< robot pose in the world frame
+	Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  //!< of (x, y, theta); zero if not tracked
+	bool matched = false;  //!< a scan match ran at this scan
+	std::string match_method;  //!< which matcher produced the fused result ("lines", "icp", ...)
+	matching::EMatchQuality match_quality = matching::EMatchQuality::failed;
+	bool match_accepted = false;  //!< the UKF fused it (not rejected by the gate)
+	double match_nis = 0;  //!< normalised innovation squared of the fused match
+	features::TLineSegmentList lines;  //!< lines extracted from this scan (robot frame), if any
+};
+
 class CPoseEstimator
 {
    public:
@@ -21,25 +41,34 @@ class CPoseEstimator
 	virtual std::string name() const = 0;
 	/** Robot pose (world frame) at the time of `scan`, given the odometry
 	 * increment since the previous scan. */
-	virtual mrpt::poses::CPose2D update(const TOdometryIncrement& increment,
-										const mrpt::obs::CObservation2DRangeScan& scan) = 0;
+	virtual TPoseEstimate update(const TOdometryIncrement& increment,
+								 const mrpt::obs::CObservation2DRangeScan& scan) = 0;
+	/** Writes the effective values of the estimator's own INI sections. */
+	virtual void saveOptions(mrpt::config::CConfigFileBase& /*out*/) const {}
 };
 
 struct TPoseEstimationOptions
 {
-	std::string method = "odometry";  //!< pose source: "odometry"
+	std::string method = "lines+icp";  //!< "odometry", "lines", "icp" or "lines+icp"
+	double match_every_m = 0.1;  //!< run the matcher after this much travel (thesis 4.5.3: 0.1 m)...
+	double match_every_rad = 5.0 * M_PI / 180.0;  //!< ...or this much rotation (thesis: 5 deg)
+	bool icp_always = true;  //!< lines+icp: refine every match with ICP (false: only weak/failed line matches)
 
 	template <class V>
 	void visit(V& v)
 	{
-		v.choice("method", method, {"odometry"});
+		v.choice("method", method, {"odometry", "lines", "icp", "lines+icp"});
+		v.real("match_every_m", match_every_m, 0.0, 100.0);
+		v.degrees("match_every_deg", match_every_rad, 0.0, 360.0);
+		v.flag("icp_always", icp_always);
 	}
 };
 
 /** Builds the estimator named by options.method; `cfg` gives it access to
- * its own INI sections. */
+ * its own INI sections; it records its sub-stages in `timer`. */
 std::unique_ptr<CPoseEstimator> createPoseEstimator(const TPoseEstimationOptions& options,
-													const mrpt::config::CConfigFileBase& cfg);
+													const mrpt::config::CConfigFileBase& cfg,
+													common::CStageTimer& timer);
 
 /** Dead reckoning: composes odometry increments from the start pose (0,0,0).
  * Unknown increments leave the pose unchanged (nothing better is known). */
@@ -47,8 +76,7 @@ class COdometryPoseEstimator : public CPoseEstimator
 {
    public:
 	std::string name() const override { return "odometry"; }
-	mrpt::poses::CPose2D update(const TOdometryIncrement& increment,
-								const mrpt::obs::CObservation2DRangeScan& scan) override;
+	TPoseEstimate update(const TOdometryIncrement& increment, const mrpt::obs::CObservation2DRangeScan& scan) override;
 
    private:
 	mrpt::poses::CPose2D m_pose;

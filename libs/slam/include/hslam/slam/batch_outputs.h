@@ -4,7 +4,10 @@
  *   map.gridmap.gz      merged mrpt::maps::COccupancyGridMap2D (MRPT tools load it)
  *   trajectory.tum      estimated pose per scan (TUM format)
  *   odometry.tum        dead-reckoning pose per scan (TUM format)
- *   timing.csv / .txt   per-stage time per scan: mean, p95, max */
+ *   timing.csv / .txt   per-stage time per scan: mean, p95, max
+ *   pose_estimates.csv  per scan: pose, standard deviations, match method/quality/NIS
+ *   pose_plot.png       x, y, theta over time with +-1 sigma and odometry (thesis figs 117-127)
+ *   frames/frame_N.png  on request (debug_frames_every): scan with its line segments (figs 88, 95) */
 #pragma once
 
 #include <hslam/slam/CMappingPipeline.h>
@@ -21,6 +24,7 @@ struct TOutputOptions
 	bool write_tiles = true;  //!< write tiles/tile_X_Y.png
 	int tile_pixels_per_cell = 1;  //!< scale of the tile images
 	bool draw_odometry = true;  //!< also draw the dead-reckoning path on map.png
+	int debug_frames_every = 0;  //!< write frames/frame_N.png for every N-th scan; 0 = none
 
 	template <class V>
 	void visit(V& v)
@@ -30,6 +34,7 @@ struct TOutputOptions
 		v.flag("write_tiles", write_tiles);
 		v.integer("tile_pixels_per_cell", tile_pixels_per_cell, 1, 16);
 		v.flag("draw_odometry", draw_odometry);
+		v.integer("debug_frames_every", debug_frames_every, 0, 1000000);
 	}
 };
 
@@ -37,6 +42,9 @@ struct TOutputOptions
  * written. Throws std::runtime_error naming the file on a write failure. */
 std::vector<std::string> writeMappingOutputs(const CMappingPipeline& pipeline, const TOutputOptions& options,
 											 const std::string& dir);
+
+/** Writes pose_estimates.csv: one row per scan. */
+void writePoseEstimatesCsv(const std::vector<CMappingPipeline::TTimedEstimate>& estimates, const std::string& path);
 
 /** Saves a grid as a gz-compressed serialized COccupancyGridMap2D (.gridmap.gz). */
 void saveGridmapGz(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& path);

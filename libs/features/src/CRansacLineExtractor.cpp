@@ -1,0 +1,96 @@
+/* hslam: RANSAC lines by MRPT, cut into segments (see CRansacLineExtractor.h). */
+#include <hslam/features/CRansacLineExtractor.h>
+#include <hslam/features/scan_points.h>
+#include <hslam/features/segment_ops.h>
+
+#include <mrpt/math/CVectorDynamic.h>
+#include <mrpt/math/TLine2D.h>
+#include <mrpt/math/ransac_applications.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <optional>
+
+namespace hslam::features
+{
+namespace
+{
+/** Redirects std::cout to nothing for its lifetime (RAII). */
+class CSilencedStdout
+{
+   public:
+	CSilencedStdout() : m_saved(std::cout.rdbuf(nullptr)) {}
+	~CSilencedStdout()
+	{
+		std::cout.rdbuf(m_saved);
+		std::cout.clear();
+	}
+	CSilencedStdout(const CSilencedStdout&) = delete;
+	CSilencedStdout& operator=(const CSilencedStdout&) = delete;
+
+   private:
+	std::streambuf* m_saved;
+};
+
+/** Cuts the (beam-ordered) indices where consecutive points are more than max_gap_m apart. */
+std::vector<std::vector<size_t>> cutAtGaps(const TScanPoints& points, const std::vector<size_t>& indices,
+										   double max_gap_m)
+{
+	std::vector<std::vector<size_t>> pieces;
+	for (size_t i : indices)
+	{
+		if (pieces.empty() || std::hypot(points.xy[i].x - points.xy[pieces.back().back()].x,
+										 points.xy[i].y - points.xy[pieces.back().back()].y) > max_gap_m)
+			pieces.emplace_back();
+		pieces.back().push_back(i);
+	}
+	return pieces;
+}
+}  // namespace
+
+TLineSegmentList CRansacLineExtractor::extract(const mrpt::obs::CObservation2DRangeScan& scan) const
+{
+	const TScanPoints points = validScanPoints(scan);
+	const size_t n = points.size();
+	TLineSegmentList out;
+	if (n < static_cast<size_t>(std::max(2, m_options.min_inliers))) return out;
+	mrpt::math::CVectorDynamic<double> xs(n), ys(n);
+	for (size_t i = 0; i < n; ++i)
+	{
+		xs[i] = points.xy[i].x;
+		ys[i] = points.xy[i].y;
+	}
+	std::vector<std::pair<size_t, mrpt::math::TLine2D>> lines;
+	{
+		// MRPT 2.5 logs "Finished in N iterations" at INFO level to std::cout
+		// on every internal RANSAC run, with no way to lower its verbosity.
+		std::optional<CSilencedStdout> quiet;
+		if (m_options.silence_mrpt_log) quiet.emplace();
+		mrpt::math::ransac_detect_2D_lines(xs, ys, lines, m_options.distance_threshold_m,
+										   static_cast<size_t>(m_options.min_inliers));
+	}
+
+	std::vector<bool> taken(n, false);
+	for (const auto& [count, line] : lines)
+	{
+		std::vector<size_t> inliers;
+		for (size_t i = 0; i < n; ++i)
+			if (!taken[i] && line.distance(points.xy[i]) <= m_options.distance_threshold_m) inliers.push_back(i);
+		for (size_t i : inliers) taken[i] = true;
+		for (const auto& piece : cutAtGaps(points, inliers, m_options.max_point_gap_m))
+		{
+			if (piece.size() < static_cast<size_t>(std::max(2, m_options.min_points))) continue;
+			std::vector<mrpt::math::TPoint2D> xy;
+			for (size_t i : piece) xy.push_back(points.xy[i]);
+			if (!fitLineTotalLeastSquares(xy).valid) continue;
+			TLineSegment s = makeSegment(points, piece);
+			if (s.length_m() >= m_options.min_length_m) out.push_back(s);
+		}
+	}
+	std::sort(out.begin(), out.end(),
+			  [](const TLineSegment& a, const TLineSegment& b) { return a.first_beam < b.first_beam; });
+	return out;
+}
+
+}  // namespace hslam::features

@@ -1,0 +1,88 @@
+/* hslam: point-to-point ICP refinement through MRPT's mrpt::slam::CICP, the
+ * combination of feature and point matching the thesis proposes as future
+ * work (4.5.5, 5.2): used when the line matcher is weak (corridors, clutter)
+ * or always, seeded by the line (or odometry) estimate.
+ *
+ * Multi-start: ICP only converges from seeds inside its basin; a heading
+ * error of 10-20 deg (seen on real logs after sharp turns) is outside it. When
+ * the first result pairs fewer than restart_below_goodness of the points, ICP
+ * is restarted from seeds rotated by +-1 and +-2 steps (step = the seed's
+ * heading standard deviation, clamped to [restart_min_step, restart_max_step])
+ * and, among the results paired nearly as well as the best, the one closest
+ * to the prior (Mahalanobis distance) is kept.
+ *
+ * MRPT's ICP covariance is computed from the point residuals and is usually
+ * overconfident on laser data; it is floored here and further adapted online
+ * by fusion::CAdaptiveMeasurementNoise. */
+#pragma once
+
+#include <hslam/matching/match_result.h>
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <Eigen/Core>
+
+namespace hslam::matching
+{
+class CIcpMatcher
+{
+   public:
+	struct TOptions
+	{
+		std::string algorithm = "classic";  //!< MRPT ICP_algorithm: "classic" or "levenberg_marquardt"
+		int max_iterations = 80;
+		double threshold_dist_m = 0.5;  //!< initial pairing distance (MRPT thresholdDist)
+		double threshold_ang_rad = 5.0 * M_PI / 180.0;  //!< pairing distance growth with range (MRPT thresholdAng)
+		double alfa = 0.6;  //!< threshold shrink factor after each convergence (MRPT ALFA)
+		double smallest_threshold_dist_m = 0.05;  //!< final pairing distance (MRPT smallestThresholdDist)
+		bool only_unique_robust = true;  //!< unique correspondences in both directions
+		int decimation = 1;  //!< use every k-th point of the scan (MRPT corresponding_points_decimation)
+		double min_goodness = 0.5;  //!< below: weak match (fraction of points paired at the end)
+		double fail_goodness = 0.2;  //!< below: failed
+		double restart_below_goodness = 0.7;  //!< multi-start when the first goodness is lower; 0 = never
+		double restart_goodness_tolerance = 0.05;  //!< results this close to the best goodness compete on prior distance
+		double restart_min_step_rad = 3.0 * M_PI / 180.0;
+		double restart_max_step_rad = 15.0 * M_PI / 180.0;
+		double min_xy_std_m = 0.02;  //!< covariance floor (laser noise, map blur)
+		double min_theta_std_rad = 0.5 * M_PI / 180.0;
+
+		template <class V>
+		void visit(V& v)
+		{
+			v.choice("algorithm", algorithm, {"classic", "levenberg_marquardt"});
+			v.integer("max_iterations", max_iterations, 1, 1000);
+			v.real("threshold_dist_m", threshold_dist_m, 0.01, 10.0);
+			v.degrees("threshold_ang_deg", threshold_ang_rad, 0.0, 45.0);
+			v.real("alfa", alfa, 0.05, 0.99);
+			v.real("smallest_threshold_dist_m", smallest_threshold_dist_m, 0.001, 5.0);
+			v.flag("only_unique_robust", only_unique_robust);
+			v.integer("decimation", decimation, 1, 100);
+			v.real("min_goodness", min_goodness, 0.0, 1.0);
+			v.real("fail_goodness", fail_goodness, 0.0, 1.0);
+			v.real("restart_below_goodness", restart_below_goodness, 0.0, 1.0);
+			v.real("restart_goodness_tolerance", restart_goodness_tolerance, 0.0, 1.0);
+			v.degrees("restart_min_step_deg", restart_min_step_rad, 0.1, 90.0);
+			v.degrees("restart_max_step_deg", restart_max_step_rad, 0.1, 90.0);
+			v.real("min_xy_std_m", min_xy_std_m, 1e-4, 1.0);
+			v.degrees("min_theta_std_deg", min_theta_std_rad, 0.001, 10.0);
+		}
+	};
+
+	CIcpMatcher() : CIcpMatcher(TOptions()) {}
+	explicit CIcpMatcher(const TOptions& options) : m_options(options) {}
+
+	/** Pose of the `current` points (robot frame) in the frame of `reference`,
+	 * starting from `initialGuess` with uncertainty `initialCov`. */
+	TPoseMatch match(const mrpt::maps::CSimplePointsMap& reference, const mrpt::maps::CSimplePointsMap& current,
+					 const mrpt::poses::CPose2D& initialGuess, const Eigen::Matrix3d& initialCov) const;
+
+	const TOptions& options() const { return m_options; }
+
+   private:
+	TPoseMatch alignOnce(const mrpt::maps::CSimplePointsMap& reference, const mrpt::maps::CSimplePointsMap& current,
+						 const mrpt::poses::CPose2D& seed, const Eigen::Matrix3d& seedCov) const;
+
+	TOptions m_options;
+};
+
+}  // namespace hslam::matching

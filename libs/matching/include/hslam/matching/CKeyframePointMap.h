@@ -1,0 +1,70 @@
+/* hslam: the reference for scan-to-map ICP: the points of recent keyframes
+ * (scans kept every insertion_distance_m / insertion_angle_rad of travel, as
+ * MRPT's icp-slam does) in the world frame. Matching against several
+ * keyframes instead of only the previous scan stops the random-walk drift of
+ * pure frame-to-frame matching; keeping only a bounded window (the most recent
+ * keyframes and those within radius_m) keeps old, possibly misaligned parts
+ * of the map from pulling the match after a long loop. */
+#pragma once
+
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/math/TPoint2D.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <deque>
+#include <vector>
+
+namespace hslam::matching
+{
+class CKeyframePointMap
+{
+   public:
+	struct TOptions
+	{
+		double insertion_distance_m = 0.5;  //!< new keyframe after this much travel...
+		double insertion_angle_rad = 15.0 * M_PI / 180.0;  //!< ...or this much rotation
+		int max_keyframes = 40;  //!< keyframes kept (oldest dropped); 0 = unlimited
+		double radius_m = 0;  //!< also drop keyframes further than this from the robot; 0 = no limit
+		double min_point_spacing_m = 0.03;  //!< points closer than this to the previous one are skipped
+
+		template <class V>
+		void visit(V& v)
+		{
+			v.real("insertion_distance_m", insertion_distance_m, 0.0, 100.0);
+			v.degrees("insertion_angle_deg", insertion_angle_rad, 0.0, 360.0);
+			v.integer("max_keyframes", max_keyframes, 0, 100000);
+			v.real("radius_m", radius_m, 0.0, 10000.0);
+			v.real("min_point_spacing_m", min_point_spacing_m, 0.0, 1.0);
+		}
+	};
+
+	CKeyframePointMap() : CKeyframePointMap(TOptions()) {}
+	explicit CKeyframePointMap(const TOptions& options) : m_options(options) {}
+
+	const TOptions& options() const { return m_options; }
+	bool empty() const { return m_keyframes.empty(); }
+	size_t keyframeCount() const { return m_keyframes.size(); }
+
+	/** True if a scan taken at `pose` should become a keyframe. */
+	bool wantsKeyframe(const mrpt::poses::CPose2D& pose) const;
+	/** Adds a keyframe: `points` in the robot frame at world pose `pose`. */
+	void addKeyframe(const mrpt::poses::CPose2D& pose, const std::vector<mrpt::math::TPoint2D>& points);
+
+	/** World-frame points of the keyframes in the window around `robotPose`
+	 * (rebuilt only when the window changes). */
+	const mrpt::maps::CSimplePointsMap& reference(const mrpt::poses::CPose2D& robotPose);
+
+   private:
+	struct TKeyframe
+	{
+		mrpt::poses::CPose2D pose;
+		std::vector<mrpt::math::TPoint2D> worldPoints;
+	};
+	TOptions m_options;
+	std::deque<TKeyframe> m_keyframes;
+	std::vector<size_t> m_windowIds;  //!< ids of the keyframes in m_reference
+	size_t m_nextId = 0, m_firstId = 0;  //!< id of m_keyframes.front()
+	mrpt::maps::CSimplePointsMap m_reference;
+};
+
+}  // namespace hslam::matching

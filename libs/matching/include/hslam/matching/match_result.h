@@ -1,0 +1,35 @@
+/* hslam: the result every scan matcher returns (thesis 4.4.2 iii output:
+ * pose change, plus what the UKF needs: a covariance and a quality flag). */
+#pragma once
+
+#include <mrpt/poses/CPose2D.h>
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <string>
+
+namespace hslam::matching
+{
+enum class EMatchQuality
+{
+	good,  //!< trust with its covariance
+	weak,  //!< usable but doubtful (thesis: best line weight < 0.9; ICP goodness low)
+	failed  //!< no estimate; do not use
+};
+
+const char* toString(EMatchQuality quality);
+
+struct TPoseMatch
+{
+	/** Frame-to-frame matchers: pose of the current scan in the previous
+	 * scan's robot frame. Scan-to-map matchers: pose in the map frame. */
+	mrpt::poses::CPose2D pose;
+	Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();  //!< of (x m, y m, theta rad)
+	EMatchQuality quality = EMatchQuality::failed;
+	double score = 0;  //!< matcher-specific: best line weight (lines), goodness (ICP)
+	size_t correspondences = 0;  //!< paired lines or matched points
+	std::string method;  //!< what produced it, e.g. "lines", "lines:points", "icp"
+};
+
+}  // namespace hslam::matching

@@ -1,0 +1,94 @@
+#include <hslam/matching/CIcpMatcher.h>
+#include <mrpt/poses/CPosePDFGaussian.h>
+#include <mrpt/slam/CICP.h>
+
+#include <algorithm>
+#include <cmath>
+#include <mrpt/math/wrap2pi.h>
+#include <Eigen/LU>
+#include <vector>
+
+namespace hslam::matching
+{
+namespace
+{
+mrpt::slam::CICP::TConfigParams toMrpt(const CIcpMatcher::TOptions& o)
+{
+	mrpt::slam::CICP::TConfigParams p;
+	p.ICP_algorithm = o.algorithm == "classic" ? mrpt::slam::icpClassic : mrpt::slam::icpLevenbergMarquardt;
+	p.maxIterations = static_cast<unsigned>(o.max_iterations);
+	p.thresholdDist = o.threshold_dist_m;
+	p.thresholdAng = o.threshold_ang_rad;
+	p.ALFA = o.alfa;
+	p.smallestThresholdDist = o.smallest_threshold_dist_m;
+	p.onlyUniqueRobust = o.only_unique_robust;
+	p.corresponding_points_decimation = static_cast<uint32_t>(o.decimation);
+	return p;
+}
+}  // namespace
+
+TPoseMatch CIcpMatcher::match(const mrpt::maps::CSimplePointsMap& reference, const mrpt::maps::CSimplePointsMap& current,
+							  const mrpt::poses::CPose2D& initialGuess, const Eigen::Matrix3d& initialCov) const
+{
+	if (reference.size() < 10 || current.size() < 10)
+	{
+		TPoseMatch failed;
+		failed.method = "icp";
+		return failed;  // too few points
+	}
+	TPoseMatch best = alignOnce(reference, current, initialGuess, initialCov);
+	if (best.score >= m_options.restart_below_goodness) return best;
+	const double step = std::clamp(std::sqrt(std::max(0.0, initialCov(2, 2))), m_options.restart_min_step_rad,
+								   m_options.restart_max_step_rad);
+	// Among results paired about as well as the best one (within
+	// restart_goodness_tolerance), keep the one closest to the prior
+	// (Mahalanobis): a wrong basin can pair marginally more points.
+	std::vector<TPoseMatch> candidates{best};
+	for (const double k : {1.0, -1.0, 2.0, -2.0})
+		candidates.push_back(alignOnce(reference, current, initialGuess + mrpt::poses::CPose2D(0, 0, k * step), initialCov));
+	double bestScore = 0;
+	for (const auto& c : candidates) bestScore = std::max(bestScore, c.score);
+	const Eigen::Matrix3d priorInfo = (initialCov + Eigen::Matrix3d::Identity() * 1e-9).inverse();
+	double bestDistance = 1e300;
+	for (const auto& c : candidates)
+	{
+		if (c.score < bestScore - m_options.restart_goodness_tolerance) continue;
+		const Eigen::Vector3d d(c.pose.x() - initialGuess.x(), c.pose.y() - initialGuess.y(),
+								mrpt::math::wrapToPi(c.pose.phi() - initialGuess.phi()));
+		const double distance = d.dot(priorInfo * d);
+		if (distance < bestDistance) bestDistance = distance, best = c;
+	}
+	return best;
+}
+
+TPoseMatch CIcpMatcher::alignOnce(const mrpt::maps::CSimplePointsMap& reference,
+								  const mrpt::maps::CSimplePointsMap& current, const mrpt::poses::CPose2D& initialGuess,
+								  const Eigen::Matrix3d& initialCov) const
+{
+	TPoseMatch result;
+	result.method = "icp";
+	mrpt::slam::CICP icp(toMrpt(m_options));
+	mrpt::math::CMatrixDouble33 cov0;
+	for (int r = 0; r < 3; ++r)
+		for (int c = 0; c < 3; ++c) cov0(r, c) = initialCov(r, c);
+	const mrpt::poses::CPosePDFGaussian seed(initialGuess, cov0);
+	mrpt::slam::CICP::TReturnInfo info;
+	const auto pdf = icp.AlignPDF(&reference, &current, seed, info);
+	mrpt::poses::CPosePDFGaussian gaussian;
+	gaussian.copyFrom(*pdf);
+	result.pose = gaussian.mean;
+	result.score = info.goodness;
+	result.correspondences = static_cast<size_t>(std::lround(info.goodness * current.size()));
+	for (int r = 0; r < 3; ++r)
+		for (int c = 0; c < 3; ++c) result.covariance(r, c) = gaussian.cov(r, c);
+	result.covariance(0, 0) += m_options.min_xy_std_m * m_options.min_xy_std_m;
+	result.covariance(1, 1) += m_options.min_xy_std_m * m_options.min_xy_std_m;
+	result.covariance(2, 2) += m_options.min_theta_std_rad * m_options.min_theta_std_rad;
+	if (!result.covariance.allFinite()) return result;
+	result.quality = info.goodness < m_options.fail_goodness  ? EMatchQuality::failed
+					 : info.goodness < m_options.min_goodness ? EMatchQuality::weak
+															  : EMatchQuality::good;
+	return result;
+}
+
+}  // namespace hslam::matching

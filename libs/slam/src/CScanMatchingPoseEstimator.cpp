@@ -1,0 +1,186 @@
+#include <hslam/common/options_io.h>
+#include <hslam/features/scan_points.h>
+#include <hslam/matching/scan_points.h>
+#include <hslam/slam/CScanMatchingPoseEstimator.h>
+
+#include <cmath>
+
+namespace hslam::slam
+{
+namespace
+{
+template <class T>
+T loaded(const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+{
+	T options;
+	common::loadOptions(options, cfg, section);
+	return options;
+}
+
+fusion::TPoseVec toVec(const mrpt::poses::CPose2D& p) { return {p.x(), p.y(), p.phi()}; }
+mrpt::poses::CPose2D toPose(const fusion::TPoseVec& v) { return {v[0], v[1], v[2]}; }
+}  // namespace
+
+std::vector<std::string> CScanMatchingPoseEstimator::sections()
+{
+	std::vector<std::string> s{"line_extraction", "line_matching", "icp", "icp_map", "ukf", "odometry_noise"};
+	for (const auto& m : features::lineExtractorMethods()) s.push_back(features::lineExtractorSection(m));
+	return s;
+}
+
+CScanMatchingPoseEstimator::CScanMatchingPoseEstimator(const TPoseEstimationOptions& options,
+													   const mrpt::config::CConfigFileBase& cfg,
+													   common::CStageTimer& timer)
+	: m_options(options),
+	  m_ukfOptions(loaded<TUkfSectionOptions>(cfg, "ukf")),
+	  m_odometryNoise(loaded<fusion::TOdometryNoiseOptions>(cfg, "odometry_noise")),
+	  m_extraction(loaded<TLineExtractionChoice>(cfg, "line_extraction")),
+	  m_extractor(features::createLineExtractor(m_extraction.method, cfg,
+												features::lineExtractorSection(m_extraction.method))),
+	  m_lineMatcher(loaded<matching::CLineScanMatcher::TOptions>(cfg, "line_matching")),
+	  m_icp(loaded<matching::CIcpMatcher::TOptions>(cfg, "icp")),
+	  m_keyframes(loaded<matching::CKeyframePointMap::TOptions>(cfg, "icp_map")),
+	  m_ukf(m_ukfOptions.filter),
+	  m_lineNoise(m_ukfOptions.adaptation),
+	  m_icpNoise(m_ukfOptions.adaptation),
+	  m_timer(timer)
+{
+}
+
+void CScanMatchingPoseEstimator::saveOptions(mrpt::config::CConfigFileBase& out) const
+{
+	common::saveOptions(m_ukfOptions, out, "ukf");
+	common::saveOptions(m_odometryNoise, out, "odometry_noise");
+	common::saveOptions(m_lineMatcher.options(), out, "line_matching");
+	common::saveOptions(m_icp.options(), out, "icp");
+	common::saveOptions(m_keyframes.options(), out, "icp_map");
+	common::saveOptions(m_extraction, out, "line_extraction");
+	// [line_extraction_<method>]: the extractor's keys as written by the user (defaults otherwise)
+}
+
+mrpt::poses::CPose2D CScanMatchingPoseEstimator::currentPose() const { return toPose(m_ukf.pose()); }
+
+bool CScanMatchingPoseEstimator::dueForMatch() const
+{
+	return m_gapSinceMatch || m_sinceMatch.norm() >= m_options.match_every_m ||
+		   std::abs(m_sinceMatch.phi()) >= m_options.match_every_rad;
+}
+
+matching::TLineScanFrame CScanMatchingPoseEstimator::makeFrame(const mrpt::obs::CObservation2DRangeScan& scan)
+{
+	matching::TLineScanFrame frame;
+	frame.points = features::validScanPoints(scan).xy;
+	frame.pointsMap = matching::toPointsMap(frame.points);
+	if (usesLines())
+	{
+		common::CStageTimer::CScope t(m_timer, "line_extraction");
+		frame.lines = m_extractor->extract(scan);
+	}
+	return frame;
+}
+
+void CScanMatchingPoseEstimator::predict(const TOdometryIncrement& increment)
+{
+	common::CStageTimer::CScope t(m_timer, "ukf");
+	if (increment.known)
+	{
+		const fusion::TPoseVec u = toVec(increment.delta);
+		m_ukf.predict(u, fusion::odometryIncrementCovariance(m_odometryNoise, u));
+		m_sinceMatch = m_sinceMatch + increment.delta;
+	}
+	else
+	{  // unknown motion: stay, but let the next match move the pose freely
+		const double sxy = m_ukfOptions.unknown_motion_xy_std_m, sth = m_ukfOptions.unknown_motion_theta_std_rad;
+		m_ukf.predict(fusion::TPoseVec::Zero(), Eigen::Vector3d(sxy * sxy, sxy * sxy, sth * sth).asDiagonal());
+		m_gapSinceMatch = true;
+	}
+	m_sinceMatchCov = fusion::odometryIncrementCovariance(m_odometryNoise, toVec(m_sinceMatch));
+	if (m_gapSinceMatch)
+	{
+		const double sxy = m_ukfOptions.unknown_motion_xy_std_m, sth = m_ukfOptions.unknown_motion_theta_std_rad;
+		m_sinceMatchCov += Eigen::Vector3d(sxy * sxy, sxy * sxy, sth * sth).asDiagonal();
+	}
+}
+
+std::optional<matching::TPoseMatch> CScanMatchingPoseEstimator::runIcp(const matching::TLineScanFrame& frame,
+																		const mrpt::poses::CPose2D& seedWorld)
+{
+	if (m_keyframes.empty()) return std::nullopt;
+	common::CStageTimer::CScope t(m_timer, "icp");
+	const auto& reference = m_keyframes.reference(seedWorld);
+	return m_icp.match(reference, frame.pointsMap, seedWorld, m_ukf.covariance());
+}
+
+void CScanMatchingPoseEstimator::fuse(const matching::TPoseMatch& match, bool relative,
+									  fusion::CAdaptiveMeasurementNoise& noise, TPoseEstimate& estimate)
+{
+	common::CStageTimer::CScope t(m_timer, "ukf");
+	const bool weak = match.quality == matching::EMatchQuality::weak;
+	const Eigen::Matrix3d R = noise.effectiveCovariance(match.covariance, weak);
+	const auto result = relative ? m_ukf.updateRelative(toVec(match.pose), R, m_ukfOptions.gate_nis)
+								 : m_ukf.updateAbsolute(toVec(match.pose), R, m_ukfOptions.gate_nis);
+	if (result.accepted) noise.observeNis(result.nis);
+	estimate.match_method = match.method;
+	estimate.match_quality = match.quality;
+	estimate.match_accepted = result.accepted;
+	estimate.match_nis = result.nis;
+}
+
+void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, TPoseEstimate& estimate)
+{
+	using matching::EMatchQuality;
+	estimate.matched = true;
+	std::optional<matching::TPoseMatch> lineMatch;
+	if (usesLines() && m_previousFrame)
+	{
+		common::CStageTimer::CScope t(m_timer, "line_matching");
+		lineMatch = m_lineMatcher.match(*m_previousFrame, frame, m_sinceMatch, m_sinceMatchCov);
+	}
+	const bool lineUsable = lineMatch && lineMatch->quality != EMatchQuality::failed;
+	const bool wantIcp = m_options.method == "icp" ||
+						 (m_options.method == "lines+icp" &&
+						  (m_options.icp_always || !lineUsable || lineMatch->quality == EMatchQuality::weak));
+	std::optional<matching::TPoseMatch> icpMatch;
+	if (wantIcp)
+	{
+		// Seed: the line result composed onto the previous pose, else the UKF prediction.
+		const mrpt::poses::CPose2D clonePose = m_ukf.hasClone() ? toPose(m_ukf.clonePose()) : currentPose();
+		const mrpt::poses::CPose2D seed = lineUsable ? clonePose + lineMatch->pose : currentPose();
+		icpMatch = runIcp(frame, seed);
+	}
+	if (icpMatch && icpMatch->quality != EMatchQuality::failed)
+		fuse(*icpMatch, false, m_icpNoise, estimate);
+	else if (lineUsable && m_ukf.hasClone())
+		fuse(*lineMatch, true, m_lineNoise, estimate);
+	else if (icpMatch)
+		estimate.match_method = icpMatch->method, estimate.match_quality = EMatchQuality::failed;
+	else if (lineMatch)
+		estimate.match_method = lineMatch->method, estimate.match_quality = EMatchQuality::failed;
+}
+
+TPoseEstimate CScanMatchingPoseEstimator::update(const TOdometryIncrement& increment,
+												 const mrpt::obs::CObservation2DRangeScan& scan)
+{
+	TPoseEstimate estimate;
+	if (m_started)
+		predict(increment);
+	if (!m_started || dueForMatch())
+	{
+		matching::TLineScanFrame frame = makeFrame(scan);
+		if (m_started) matchAndFuse(frame, estimate);
+		m_started = true;
+		const mrpt::poses::CPose2D pose = currentPose();
+		if (usesIcp() && m_keyframes.wantsKeyframe(pose)) m_keyframes.addKeyframe(pose, frame.points);
+		estimate.lines = frame.lines;
+		m_previousFrame = std::move(frame);
+		m_ukf.cloneCurrentPose();
+		m_sinceMatch = mrpt::poses::CPose2D();
+		m_sinceMatchCov.setZero();
+		m_gapSinceMatch = false;
+	}
+	estimate.pose = currentPose();
+	estimate.covariance = m_ukf.covariance();
+	return estimate;
+}
+
+}  // namespace hslam::slam
