@@ -393,7 +393,7 @@ int runSonarSuite(int repetitions, const std::string& outDir)
 			  << " deg, 0.1 m cells); agreement with the ground-truth map\n"
 			  << std::left << std::setw(10) << "run" << std::setw(16) << "map" << std::right << std::setw(8) << "updates"
 			  << std::setw(12) << "ms/update" << std::setw(11) << "agreement" << std::setw(9) << "known" << std::setw(11)
-			  << "false occ" << std::setw(12) << "walls found\n";
+			  << "false occ" << std::setw(13) << "walls found" << "\n";
 	double fastTime = 0, standardTime = 0, wholeTileTime = 0;
 	size_t fastKnown = 0, fastCorrect = 0, stdKnown = 0, stdCorrect = 0;
 	auto row = [](const std::string& run, const std::string& map, size_t updates, double msPerUpdate,
@@ -401,7 +401,7 @@ int runSonarSuite(int repetitions, const std::string& outDir)
 		std::cout << std::left << std::setw(10) << run << std::setw(16) << map << std::right << std::setw(8) << updates
 				  << std::fixed << std::setprecision(3) << std::setw(12) << msPerUpdate << std::setprecision(4)
 				  << std::setw(11) << s.agreement() << std::setw(9) << s.known << std::setw(11) << s.false_occupied
-				  << std::setprecision(3) << std::setw(11) << s.wallsFound() << "\n";
+				  << std::setprecision(3) << std::setw(13) << s.wallsFound() << "\n";
 	};
 	struct TLaserRow
 	{

@@ -33,7 +33,11 @@ using TLogOddsCell = int16_t;
 constexpr float kLogOddsScale = 1000.0f;
 constexpr TLogOddsCell kUnknownCell = INT16_MIN;
 
-inline TLogOddsCell toCellUnits(float logOdds) { return static_cast<TLogOddsCell>(std::lround(logOdds * kLogOddsScale)); }
+inline TLogOddsCell toCellUnits(float logOdds)
+{
+	const float units = logOdds * kLogOddsScale;  // round half away from zero, inline (std::lround is a libm call)
+	return static_cast<TLogOddsCell>(units >= 0 ? units + 0.5f : units - 0.5f);
+}
 
 /** Storage of one tile: fixed-point log-odds of occupancy per cell, or
  * kUnknownCell if never observed. */
