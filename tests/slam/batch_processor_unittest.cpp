@@ -59,7 +59,7 @@ TEST(BatchProcessor, MrptSampleRawlogEndToEnd)
 {
 	ASSERT_TRUE(std::filesystem::exists(kSample)) << kSample;
 	hslam::testing::CTempDir dir;
-	const auto result = runBatch(kSample, dir.path().string());
+	const auto result = runBatch(kSample, dir.path().string(), {"pose_estimation.method=odometry"});
 	EXPECT_TRUE(result.input_error.empty()) << result.input_error;
 	EXPECT_EQ(result.counters.laser_scans, 225u);
 	EXPECT_EQ(result.counters.odometry_readings, 224u);
@@ -202,7 +202,7 @@ TEST(BatchProcessor, OdometryGapCommentMeansUnknownMotion)
 		scan();
 		odometry(2.0), scan();  // the importer's chain: +1 m after the gap
 	}
-	const auto result = runBatch(dir.file("gap.rawlog"), dir.file("out"));
+	const auto result = runBatch(dir.file("gap.rawlog"), dir.file("out"), {"pose_estimation.method=odometry"});
 	EXPECT_EQ(result.counters.odometry_gaps, 1u);
 	const auto trajectory = common::readTumFile(dir.file("out/trajectory.tum"));
 	ASSERT_EQ(trajectory.size(), 4u);

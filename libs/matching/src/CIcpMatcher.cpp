@@ -79,8 +79,11 @@ TPoseMatch CIcpMatcher::alignOnce(const mrpt::maps::CSimplePointsMap& reference,
 	result.pose = gaussian.mean;
 	result.score = info.goodness;
 	result.correspondences = static_cast<size_t>(std::lround(info.goodness * current.size()));
-	for (int r = 0; r < 3; ++r)
-		for (int c = 0; c < 3; ++c) result.covariance(r, c) = gaussian.cov(r, c);
+	if (m_options.covariance == "geometric")
+		result.covariance = geometricAlignmentCovariance(reference, current, result.pose, m_options.geometric);
+	else
+		for (int r = 0; r < 3; ++r)
+			for (int c = 0; c < 3; ++c) result.covariance(r, c) = gaussian.cov(r, c);
 	result.covariance(0, 0) += m_options.min_xy_std_m * m_options.min_xy_std_m;
 	result.covariance(1, 1) += m_options.min_xy_std_m * m_options.min_xy_std_m;
 	result.covariance(2, 2) += m_options.min_theta_std_rad * m_options.min_theta_std_rad;

@@ -31,6 +31,16 @@ CWalkingPerson::CWalkingPerson(TPersonSpec spec) : m_spec(std::move(spec))
 
 void CWalkingPerson::pointAt(double s, TPoint2D& p, TVector2D& tangent) const
 {
+	if (s < 0 && !m_spec.loop)
+	{
+		// Behind the start of an open path (the trailing leg at t = 0): extend the first piece backwards.
+		const TPoint2D& a = m_path[0];
+		const TPoint2D& b = m_path[1];
+		const double piece = std::max(1e-12, m_cumulative[1]);
+		tangent = TVector2D{(b.x - a.x) / piece, (b.y - a.y) / piece};
+		p = TPoint2D{a.x + s * tangent.x, a.y + s * tangent.y};
+		return;
+	}
 	s = std::fmod(s, m_length);
 	if (s < 0) s += m_length;
 	size_t k = 1;

@@ -1,4 +1,5 @@
 /* hslam sim: scene text parser, corner extraction and raster loaders. */
+#include <hslam/common/parse_number.h>
 #include <hslam/sim/scene.h>
 
 #include <mrpt/img/CImage.h>
@@ -6,6 +7,7 @@
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -43,18 +45,9 @@ class CLineError
 
 double parseNumber(const std::string& token, const CLineError& err)
 {
-	size_t used = 0;
-	double v = 0;
-	try
-	{
-		v = std::stod(token, &used);
-	}
-	catch (const std::exception&)
-	{
-		used = 0;
-	}
-	if (used != token.size() || !std::isfinite(v)) err.fail("'" + token + "' is not a finite number");
-	return v;
+	const auto v = hslam::common::tryParseDouble(token);
+	if (!v) err.fail("'" + token + "' is not a finite number");
+	return *v;
 }
 
 /** Adds a chain of walls (free on the left) and its corners. */
@@ -166,6 +159,27 @@ void parsePerson(TScene& scene, const std::vector<std::string>& words, const CLi
 	}
 	scene.people.push_back(p);
 }
+/** A convex corner of one chain that touches a wall of another chain (a box
+ * pushed against a room wall) is seen from free space as an inside corner:
+ * its free opening is the convex opening minus the 180 deg of the wall. */
+void classifyJunctions(TScene& scene)
+{
+	for (auto& c : scene.corners)
+	{
+		if (c.kind != ECornerKind::convex) continue;
+		for (const auto& s : scene.world.segments())
+		{
+			if (s.tag.group == c.chain) continue;
+			const double ex = s.b.x - s.a.x, ey = s.b.y - s.a.y, len2 = ex * ex + ey * ey;
+			if (len2 <= 0) continue;
+			const double u = std::clamp(((c.point.x - s.a.x) * ex + (c.point.y - s.a.y) * ey) / len2, 0.0, 1.0);
+			if (std::hypot(c.point.x - (s.a.x + u * ex), c.point.y - (s.a.y + u * ey)) > 1e-3) continue;
+			c.kind = ECornerKind::concave;
+			c.free_angle_deg -= 180.0;
+			break;
+		}
+	}
+}
 }  // namespace
 
 TScene parseSceneText(const std::string& text, const std::string& name)
@@ -238,6 +252,7 @@ TScene parseSceneText(const std::string& text, const std::string& name)
 			err.fail("unknown item '" + kind +
 					 "' (expected wall, polyline, room, box, circle, chair, table or person)");
 	}
+	classifyJunctions(scene);
 	return scene;
 }
 

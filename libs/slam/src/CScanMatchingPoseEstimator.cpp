@@ -66,6 +66,12 @@ bool CScanMatchingPoseEstimator::dueForMatch() const
 		   std::abs(m_sinceMatch.phi()) >= m_options.match_every_rad;
 }
 
+bool CScanMatchingPoseEstimator::dueForIcp() const
+{
+	return m_gapSinceMatch || m_sinceIcp.norm() >= m_options.icp_every_m ||
+		   std::abs(m_sinceIcp.phi()) >= m_options.icp_every_rad;
+}
+
 matching::TLineScanFrame CScanMatchingPoseEstimator::makeFrame(const mrpt::obs::CObservation2DRangeScan& scan)
 {
 	matching::TLineScanFrame frame;
@@ -87,6 +93,7 @@ void CScanMatchingPoseEstimator::predict(const TOdometryIncrement& increment)
 		const fusion::TPoseVec u = toVec(increment.delta);
 		m_ukf.predict(u, fusion::odometryIncrementCovariance(m_odometryNoise, u));
 		m_sinceMatch = m_sinceMatch + increment.delta;
+		m_sinceIcp = m_sinceIcp + increment.delta;
 	}
 	else
 	{  // unknown motion: stay, but let the next match move the pose freely
@@ -129,7 +136,6 @@ void CScanMatchingPoseEstimator::fuse(const matching::TPoseMatch& match, bool re
 void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, TPoseEstimate& estimate)
 {
 	using matching::EMatchQuality;
-	estimate.matched = true;
 	std::optional<matching::TPoseMatch> lineMatch;
 	if (usesLines() && m_previousFrame)
 	{
@@ -137,9 +143,9 @@ void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, T
 		lineMatch = m_lineMatcher.match(*m_previousFrame, frame, m_sinceMatch, m_sinceMatchCov);
 	}
 	const bool lineUsable = lineMatch && lineMatch->quality != EMatchQuality::failed;
-	const bool wantIcp = m_options.method == "icp" ||
-						 (m_options.method == "lines+icp" &&
-						  (m_options.icp_always || !lineUsable || lineMatch->quality == EMatchQuality::weak));
+	const bool wantIcp = usesIcp() && dueForIcp() &&
+						 (m_options.method == "icp" || m_options.icp_always || !lineUsable ||
+						  lineMatch->quality == EMatchQuality::weak);
 	std::optional<matching::TPoseMatch> icpMatch;
 	if (wantIcp)
 	{
@@ -147,7 +153,9 @@ void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, T
 		const mrpt::poses::CPose2D clonePose = m_ukf.hasClone() ? toPose(m_ukf.clonePose()) : currentPose();
 		const mrpt::poses::CPose2D seed = lineUsable ? clonePose + lineMatch->pose : currentPose();
 		icpMatch = runIcp(frame, seed);
+		m_sinceIcp = mrpt::poses::CPose2D();
 	}
+	estimate.matched = lineMatch.has_value() || icpMatch.has_value();
 	if (icpMatch && icpMatch->quality != EMatchQuality::failed)
 		fuse(*icpMatch, false, m_icpNoise, estimate);
 	else if (lineUsable && m_ukf.hasClone())

@@ -16,6 +16,7 @@
  * by fusion::CAdaptiveMeasurementNoise. */
 #pragma once
 
+#include <hslam/matching/icp_covariance.h>
 #include <hslam/matching/match_result.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/poses/CPose2D.h>
@@ -43,6 +44,8 @@ class CIcpMatcher
 		double restart_goodness_tolerance = 0.05;  //!< results this close to the best goodness compete on prior distance
 		double restart_min_step_rad = 3.0 * M_PI / 180.0;
 		double restart_max_step_rad = 15.0 * M_PI / 180.0;
+		std::string covariance = "geometric";  //!< "geometric" (icp_covariance.h) or "mrpt" (CICP's own)
+		TGeometricCovarianceOptions geometric;
 		double min_xy_std_m = 0.02;  //!< covariance floor (laser noise, map blur)
 		double min_theta_std_rad = 0.5 * M_PI / 180.0;
 
@@ -63,6 +66,11 @@ class CIcpMatcher
 			v.real("restart_goodness_tolerance", restart_goodness_tolerance, 0.0, 1.0);
 			v.degrees("restart_min_step_deg", restart_min_step_rad, 0.1, 90.0);
 			v.degrees("restart_max_step_deg", restart_max_step_rad, 0.1, 90.0);
+			v.choice("covariance", covariance, {"geometric", "mrpt"});
+			v.integer("covariance_normal_neighbours", geometric.normal_neighbours, 3, 50);
+			v.real("covariance_max_match_distance_m", geometric.max_match_distance_m, 0.01, 5.0);
+			v.real("covariance_min_sigma_m", geometric.min_sigma_m, 1e-4, 1.0);
+			v.real("covariance_correlation_factor", geometric.correlation_factor, 1.0, 1000.0);
 			v.real("min_xy_std_m", min_xy_std_m, 1e-4, 1.0);
 			v.degrees("min_theta_std_deg", min_theta_std_rad, 0.001, 10.0);
 		}

@@ -92,6 +92,7 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	bool usesLines() const { return m_options.method != "icp"; }
 	bool usesIcp() const { return m_options.method != "lines"; }
 	bool dueForMatch() const;
+	bool dueForIcp() const;
 	matching::TLineScanFrame makeFrame(const mrpt::obs::CObservation2DRangeScan& scan);
 	void predict(const TOdometryIncrement& increment);
 	void matchAndFuse(matching::TLineScanFrame& frame, TPoseEstimate& estimate);
@@ -116,6 +117,7 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	bool m_started = false;
 	std::optional<matching::TLineScanFrame> m_previousFrame;  //!< last matched scan
 	mrpt::poses::CPose2D m_sinceMatch;  //!< odometry since the last matched scan (its robot frame)
+	mrpt::poses::CPose2D m_sinceIcp;  //!< odometry since the last ICP match
 	Eigen::Matrix3d m_sinceMatchCov = Eigen::Matrix3d::Zero();
 	bool m_gapSinceMatch = false;
 };

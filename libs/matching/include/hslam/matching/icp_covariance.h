@@ -1,0 +1,39 @@
+/* hslam: covariance of a converged 2D scan alignment from the geometry of the
+ * matched surfaces (point-to-line information matrix, the approach of Censi's
+ * closed-form ICP covariance, simplified to its dominant term).
+ *
+ * Each point p of the aligned scan, lying on a reference surface with normal
+ * n (from the k nearest reference points), constrains the pose only along n:
+ *     J = [n_x, n_y, n . d(R p)/dtheta],   H = sum J' J,
+ *     cov = sigma^2 * correlation_factor * H^-1,
+ * sigma^2 the point-to-line residual variance. In a corridor every normal is
+ * perpendicular to the axis, H is singular along it and the variance there
+ * becomes huge, so the UKF keeps the odometry for that direction: MRPT's ICP
+ * covariance (finite differences of the matching error) is small in every
+ * direction there, and the estimate slid along simulated corridors. */
+#pragma once
+
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <Eigen/Core>
+
+namespace hslam::matching
+{
+struct TGeometricCovarianceOptions
+{
+	int normal_neighbours = 6;  //!< reference points used to fit each normal
+	double max_match_distance_m = 0.2;  //!< points further from the reference surface are outliers
+	double min_sigma_m = 0.02;  //!< floor of the residual std (laser noise)
+	double correlation_factor = 10.0;  //!< points per independent error (neighbouring beams are correlated)
+	double max_std_m = 100.0;  //!< cap of the std in an unconstrained direction
+};
+
+/** Covariance of `pose` (pose of the current scan in the reference frame);
+ * nullopt-like identity*max_std^2 if fewer than 10 points match. */
+Eigen::Matrix3d geometricAlignmentCovariance(const mrpt::maps::CSimplePointsMap& reference,
+											 const mrpt::maps::CSimplePointsMap& current,
+											 const mrpt::poses::CPose2D& pose,
+											 const TGeometricCovarianceOptions& options, size_t* matchedPoints = nullptr);
+
+}  // namespace hslam::matching

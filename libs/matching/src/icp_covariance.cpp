@@ -1,0 +1,71 @@
+#include <hslam/matching/icp_covariance.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+#include <vector>
+
+namespace hslam::matching
+{
+namespace
+{
+/** Unit normal of the reference points idx (PCA: smallest eigenvector). */
+bool fitNormal(const mrpt::maps::CSimplePointsMap& ref, const std::vector<size_t>& idx, Eigen::Vector2d& normal)
+{
+	if (idx.size() < 3) return false;
+	Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+	for (size_t i : idx) mean += Eigen::Vector2d(ref.getPointsBufferRef_x()[i], ref.getPointsBufferRef_y()[i]);
+	mean /= static_cast<double>(idx.size());
+	Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
+	for (size_t i : idx)
+	{
+		const Eigen::Vector2d d = Eigen::Vector2d(ref.getPointsBufferRef_x()[i], ref.getPointsBufferRef_y()[i]) - mean;
+		scatter += d * d.transpose();
+	}
+	Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(scatter);
+	if (eig.eigenvalues()[1] <= 0 || eig.eigenvalues()[0] > 0.25 * eig.eigenvalues()[1]) return false;  // not a line
+	normal = eig.eigenvectors().col(0);
+	return true;
+}
+}  // namespace
+
+Eigen::Matrix3d geometricAlignmentCovariance(const mrpt::maps::CSimplePointsMap& reference,
+											 const mrpt::maps::CSimplePointsMap& current,
+											 const mrpt::poses::CPose2D& pose,
+											 const TGeometricCovarianceOptions& o, size_t* matchedPoints)
+{
+	Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+	double residual2 = 0;
+	size_t matched = 0;
+	std::vector<size_t> idx;
+	std::vector<float> dist2;
+	const auto& xs = current.getPointsBufferRef_x();
+	const auto& ys = current.getPointsBufferRef_y();
+	for (size_t k = 0; k < current.size(); ++k)
+	{
+		const auto w = pose + mrpt::math::TPoint2D(xs[k], ys[k]);
+		reference.kdTreeNClosestPoint2DIdx(static_cast<float>(w.x), static_cast<float>(w.y),
+										   static_cast<size_t>(o.normal_neighbours), idx, dist2);
+		if (idx.empty() || dist2[0] > o.max_match_distance_m * o.max_match_distance_m) continue;
+		Eigen::Vector2d n;
+		if (!fitNormal(reference, idx, n)) continue;
+		const Eigen::Vector2d q(reference.getPointsBufferRef_x()[idx[0]], reference.getPointsBufferRef_y()[idx[0]]);
+		const Eigen::Vector2d arm(w.x - pose.x(), w.y - pose.y());  // R p
+		const Eigen::Vector3d J(n.x(), n.y(), n.x() * -arm.y() + n.y() * arm.x());
+		H += J * J.transpose();
+		residual2 += std::pow(n.dot(Eigen::Vector2d(w.x, w.y) - q), 2);
+		++matched;
+	}
+	if (matchedPoints) *matchedPoints = matched;
+	const double cap2 = o.max_std_m * o.max_std_m;
+	if (matched < 10) return Eigen::Matrix3d::Identity() * cap2;
+	const double sigma2 = std::max(residual2 / matched, o.min_sigma_m * o.min_sigma_m) * o.correlation_factor;
+	// Invert through the eigen-decomposition, capping the variance of
+	// unconstrained directions instead of dividing by ~0.
+	Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(H);
+	Eigen::Vector3d inv;
+	for (int i = 0; i < 3; ++i) inv[i] = std::min(sigma2 / std::max(eig.eigenvalues()[i], 1e-12), cap2);
+	return eig.eigenvectors() * inv.asDiagonal() * eig.eigenvectors().transpose();
+}
+
+}  // namespace hslam::matching
