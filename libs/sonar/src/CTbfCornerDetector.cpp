@@ -116,6 +116,9 @@ void CTbfCornerDetector::addColumn(std::vector<TTbfReading> readings)
 			addHypothesis(bestMean, static_cast<int>(bestCount));
 	}
 
+	if (m_intersections.size() > kMaxKeptIntersections)  // bounded memory on long runs
+		m_intersections.erase(m_intersections.begin(),
+							  m_intersections.end() - static_cast<std::ptrdiff_t>(kMaxKeptIntersections / 2));
 	m_window.push_back(std::move(readings));
 	while (static_cast<int>(m_window.size()) > m_options.window_columns) m_window.pop_front();
 }

@@ -78,6 +78,8 @@ struct TTbfCorner
 class CTbfCornerDetector
 {
    public:
+	static constexpr size_t kMaxKeptIntersections = 20000;
+
 	struct TOptions
 	{
 		int window_columns = 9;  //!< thesis 4.3.4: 9 columns
@@ -132,7 +134,8 @@ class CTbfCornerDetector
 	const std::vector<TTbfCorner>& corners() const { return m_corners; }
 	/** Corners with at least `minSupport`. */
 	std::vector<TTbfCorner> corners(int minSupport) const;
-	/** Every in-cone intersection computed so far (stable or not). */
+	/** The most recent in-cone intersections (stable or not; at most
+	 * kMaxKeptIntersections, for plots and diagnostics). */
 	const std::vector<TTbfIntersection>& intersections() const { return m_intersections; }
 	const TOptions& options() const { return m_options; }
 	void clear();
