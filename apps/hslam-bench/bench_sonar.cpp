@@ -535,7 +535,7 @@ int runSonarSuite(int repetitions, const std::string& outDir)
 	std::cout << "\n3. TBF sonar corners vs true corners (within 0.2 m); observable = in some cone within 3 m, in sight\n"
 			  << std::left << std::setw(34) << "filters" << std::right << std::setw(9) << "corners" << std::setw(11)
 			  << "precision" << std::setw(12) << "observable" << std::setw(9) << "recall" << "\n";
-	TTbfScore finalScore;
+	TTbfScore finalScore, support4, support8;
 	for (const auto& v : variants)
 	{
 		TTbfScore total;
@@ -548,9 +548,12 @@ int runSonarSuite(int repetitions, const std::string& outDir)
 			const auto tbf = runTbf(run, o);
 			std::vector<TPoint2D> all;
 			for (const auto& c : run.scene.corners) all.push_back(c.point);
-			total.add(scoreCorners(tbf.corners(), observableCorners(run, ring), all));
+			const auto observable = observableCorners(run, ring);
+			total.add(scoreCorners(tbf.corners(), observable, all));
 			if (&v == &variants.back())
 			{
+				support4.add(scoreCorners(tbf.corners(4), observable, all));
+				support8.add(scoreCorners(tbf.corners(8), observable, all));
 				maps::CTiledOccupancyGrid probe;
 				saveTbfImage(run, probe.geometry(), groundTruth(run, probe.geometry()), tbf,
 							 outDir + "/" + run.name + "_tbf_corners.png");
@@ -561,6 +564,11 @@ int runSonarSuite(int repetitions, const std::string& outDir)
 				  << std::setw(9) << total.recall() << "\n";
 		finalScore = total;
 	}
+	for (const auto& [name, score] : {std::pair<std::string, TTbfScore>{"default, support >= 4", support4},
+									  std::pair<std::string, TTbfScore>{"default, support >= 8", support8}})
+		std::cout << std::left << std::setw(34) << name << std::right << std::setw(9) << score.output << std::fixed
+				  << std::setprecision(3) << std::setw(11) << score.precision() << std::setw(12) << score.observable
+				  << std::setw(9) << score.recall() << "\n";
 
 	std::cout << "\nimages: " << outDir << "/{office,corridor}_{sonar_fast,sonar_standard,laser,fused,tbf_corners}.png\n";
 	std::cout << std::defaultfloat << std::setprecision(6) << "\nlaser_tiled_vs_mrpt_insert_speedup=" << sumMrptUs / sumOursUs
