@@ -15,7 +15,7 @@
  *         sonar_model = fast         ; sonar_* = CSonarGridInserter keys
  *         [MappingApplication_tiledOccupancyGrid_00_likelihoodOpts]
  *         sigma_m = 0.1              ; see TLikelihoodOptions
- *     (every key documented in config_ini/hslam-default.ini, [tiled_map_*]);
+ *     (every key documented in config_ini/tiled-map-mrpt.ini);
  *   - insertObservation: CObservation2DRangeScan with the thesis' fast laser
  *     model (CLaserGridInserter), CObservationRange with a sonar model
  *     (CSonarGridInserter, fast or standard, weighted below the laser);
@@ -30,7 +30,8 @@
  * Registration happens at load time of the object file (MAP_DEFINITION_REGISTER
  * and an MRPT_INITIALIZER); code that links hslam::maps statically and creates
  * the map only from INI must call registerTiledMapClasses() once so the
- * linker keeps this translation unit. */
+ * linker keeps this translation unit. MRPT apps get it from the plug-in
+ * module libhslam-maps-plugin.so (-p, or LD_PRELOAD for apps without -p). */
 #pragma once
 
 #include <hslam/maps/CLaserGridInserter.h>
