@@ -20,4 +20,42 @@ std::vector<TPosedScan> loadPosedScans(const std::string& rawlogPath)
 	return out;
 }
 
+maps::CLaserGridInserter::TOptions ourLaserOptions()
+{
+	maps::CLaserGridInserter::TOptions o;
+	o.max_range_m = kRangeLimit_m;
+	o.insert_free_beyond_range = true;
+	return o;
+}
+
+void insertOurs(maps::CTiledOccupancyGrid& grid, const std::vector<TPosedScan>& scans)
+{
+	maps::CLaserGridInserter inserter(ourLaserOptions());
+	for (const auto& s : scans) inserter.insert(grid, s.pose, s.scan);
+}
+
+mrpt::maps::COccupancyGridMap2D makeMrptGrid(const maps::CTiledOccupancyGrid& sizedLike)
+{
+	const maps::TCellBounds b = sizedLike.observedBounds();
+	const double res = sizedLike.geometry().resolution_m();
+	mrpt::maps::COccupancyGridMap2D grid(static_cast<float>((b.gxMin - 5) * res), static_cast<float>((b.gxMax + 6) * res),
+										 static_cast<float>((b.gyMin - 5) * res), static_cast<float>((b.gyMax + 6) * res),
+										 static_cast<float>(res));
+	grid.insertionOptions.maxDistanceInsertion = static_cast<float>(kRangeLimit_m);
+	grid.insertionOptions.considerInvalidRangesAsFreeSpace = false;
+	grid.insertionOptions.maxOccupancyUpdateCertainty = 0.9f;
+	grid.insertionOptions.maxFreenessUpdateCertainty = 0.7f;
+	return grid;
+}
+
+void insertMrpt(mrpt::maps::COccupancyGridMap2D& grid, const std::vector<TPosedScan>& scans)
+{
+	for (const auto& s : scans) grid.insertObservation(s.scan, mrpt::poses::CPose3D(s.pose));
+}
+
+size_t mrptGridBytes(const mrpt::maps::COccupancyGridMap2D& grid)
+{
+	return static_cast<size_t>(grid.getSizeX()) * grid.getSizeY() * sizeof(mrpt::maps::COccupancyGridMap2D::cellType);
+}
+
 }  // namespace hslam::bench

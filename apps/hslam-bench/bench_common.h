@@ -1,6 +1,8 @@
 /* hslam-bench: helpers shared by the benchmark suites. */
 #pragma once
 
+#include <hslam/maps/CLaserGridInserter.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
 
@@ -39,7 +41,25 @@ double bestTimeOf(int repetitions, F&& fn)
 /** The MRPT sample rawlog shipped with mrpt-common (real laser + odometry). */
 inline const char* kMrptSampleRawlog = "/usr/share/mrpt/datasets/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog";
 
+/* Laser insertion with comparable settings for our tiled grid and MRPT's
+ * COccupancyGridMap2D (used by the grid and sonar suites):
+ *   - range limit 3 m on both (MRPT maxDistanceInsertion; ours max_range_m
+ *     with insert_free_beyond_range, which is what MRPT does with long beams),
+ *   - invalid beams ignored on both (MRPT considerInvalidRangesAsFreeSpace off),
+ *   - MRPT's update certainties set to our sensor probabilities (0.9 / 0.7),
+ *   - the MRPT grid pre-sized to the final area (no resizing during the run). */
+constexpr double kRangeLimit_m = 3.0;
+maps::CLaserGridInserter::TOptions ourLaserOptions();
+void insertOurs(maps::CTiledOccupancyGrid& grid, const std::vector<TPosedScan>& scans);
+/** An MRPT grid covering the observed cells of `sizedLike` (+5 cells). */
+mrpt::maps::COccupancyGridMap2D makeMrptGrid(const maps::CTiledOccupancyGrid& sizedLike);
+void insertMrpt(mrpt::maps::COccupancyGridMap2D& grid, const std::vector<TPosedScan>& scans);
+/** Bytes of an MRPT grid's cells. */
+size_t mrptGridBytes(const mrpt::maps::COccupancyGridMap2D& grid);
+
 int runGridSuite(const std::vector<std::string>& rawlogs, int repetitions);
+/** Sonar models, TBF and laser tiled-vs-MRPT on simulated runs; images into `outDir`. */
+int runSonarSuite(int repetitions, const std::string& outDir);
 
 /** Line extractors on thesis table 3 scenes and real scans (bench_lines.cpp);
  * `logs` empty: ../shared/datasets/carmen/{intel,aces,csail}-corrected.log.gz

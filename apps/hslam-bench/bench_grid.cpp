@@ -1,11 +1,6 @@
 /* hslam-bench grid: our tiled grid with the thesis laser model against MRPT's
  * COccupancyGridMap2D::insertObservation on the same real scans and poses,
- * measured in the same run with comparable settings:
- *   - range limit 3 m on both (MRPT maxDistanceInsertion; ours max_range_m
- *     with insert_free_beyond_range, which is what MRPT does with long beams),
- *   - invalid beams ignored on both (MRPT considerInvalidRangesAsFreeSpace off),
- *   - MRPT's update certainties set to our sensor probabilities (0.9 / 0.7),
- *   - the MRPT grid pre-sized to the final area (no resizing during the run).
+ * measured in the same run with comparable settings (see bench_common.h).
  * Agreement: cells classified occupied / free / unknown, compared over the
  * cells known in either map. Memory: our tiles vs MRPT's one rectangle. */
 #include "bench_common.h"
@@ -22,41 +17,6 @@ namespace hslam::bench
 {
 namespace
 {
-constexpr double kRangeLimit_m = 3.0;
-
-maps::CLaserGridInserter::TOptions ourLaserOptions()
-{
-	maps::CLaserGridInserter::TOptions o;
-	o.max_range_m = kRangeLimit_m;
-	o.insert_free_beyond_range = true;
-	return o;
-}
-
-void insertOurs(maps::CTiledOccupancyGrid& grid, const std::vector<TPosedScan>& scans)
-{
-	maps::CLaserGridInserter inserter(ourLaserOptions());
-	for (const auto& s : scans) inserter.insert(grid, s.pose, s.scan);
-}
-
-mrpt::maps::COccupancyGridMap2D makeMrptGrid(const maps::CTiledOccupancyGrid& sizedLike)
-{
-	const maps::TCellBounds b = sizedLike.observedBounds();
-	const double res = sizedLike.geometry().resolution_m();
-	mrpt::maps::COccupancyGridMap2D grid(static_cast<float>((b.gxMin - 5) * res), static_cast<float>((b.gxMax + 6) * res),
-										 static_cast<float>((b.gyMin - 5) * res), static_cast<float>((b.gyMax + 6) * res),
-										 static_cast<float>(res));
-	grid.insertionOptions.maxDistanceInsertion = static_cast<float>(kRangeLimit_m);
-	grid.insertionOptions.considerInvalidRangesAsFreeSpace = false;
-	grid.insertionOptions.maxOccupancyUpdateCertainty = 0.9f;
-	grid.insertionOptions.maxFreenessUpdateCertainty = 0.7f;
-	return grid;
-}
-
-void insertMrpt(mrpt::maps::COccupancyGridMap2D& grid, const std::vector<TPosedScan>& scans)
-{
-	for (const auto& s : scans) grid.insertObservation(s.scan, mrpt::poses::CPose3D(s.pose));
-}
-
 struct TRow
 {
 	std::string name;
@@ -79,7 +39,7 @@ TRow measure(const std::string& rawlog, int repetitions)
 	insertMrpt(mrptGrid, scans);
 	row.agreement = maps::compareWithMrptGrid(ours, mrptGrid).fraction();
 	row.ours_bytes = ours.memoryBytes();
-	row.mrpt_bytes = static_cast<size_t>(mrptGrid.getSizeX()) * mrptGrid.getSizeY() * sizeof(mrpt::maps::COccupancyGridMap2D::cellType);
+	row.mrpt_bytes = mrptGridBytes(mrptGrid);
 
 	const double perScan = 1e6 / static_cast<double>(scans.size());
 	row.ours_us = perScan * bestTimeOf(repetitions, [&] {

@@ -4,6 +4,7 @@
  *
  *   hslam-bench grid [--rawlog FILE ...] [--repetitions N]
  *   hslam-bench lines [--rawlog FILE|CARMEN.log.gz ...] [--repetitions N]
+ *   hslam-bench sonar [--repetitions N]     (simulated runs; images into ./hslam-bench-sonar/)
  */
 #include "bench_common.h"
 
@@ -13,8 +14,8 @@
 
 int main(int argc, char** argv)
 {
-	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, lines)", ' ', "0.1");
-	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid, lines", true, "", "suite", cmd);
+	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, lines, sonar)", ' ', "0.1");
+	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid, lines, sonar", true, "", "suite", cmd);
 	TCLAP::MultiArg<std::string> rawlogs("r", "rawlog",
 										 "rawlog(s) with laser scans and odometry (default: MRPT's sample rawlog)",
 										 false, "file", cmd);
@@ -27,7 +28,8 @@ int main(int argc, char** argv)
 		std::vector<std::string> inputs = rawlogs.getValue();
 		if (inputs.empty()) inputs.push_back(hslam::bench::kMrptSampleRawlog);
 		if (suite.getValue() == "grid") return hslam::bench::runGridSuite(inputs, std::max(1, repetitions.getValue()));
-		std::cerr << "hslam-bench: unknown suite '" << suite.getValue() << "' (available: grid, lines)\n";
+		if (suite.getValue() == "sonar") return hslam::bench::runSonarSuite(std::max(1, repetitions.getValue()), "hslam-bench-sonar");
+		std::cerr << "hslam-bench: unknown suite '" << suite.getValue() << "' (available: grid, lines, sonar)\n";
 		return 1;
 	}
 	catch (const TCLAP::ArgException& e)

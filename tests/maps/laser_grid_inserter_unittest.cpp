@@ -27,6 +27,7 @@ mrpt::obs::CObservation2DRangeScan uniformScan(float range_m, size_t beams = 5)
 
 double logit(double p) { return std::log(p / (1 - p)); }
 
+// Cells are int16 fixed point (log-odds step 0.001): probabilities match to 1e-4.
 // The robot in the middle of cell (0,0), so beam ends at whole metres fall
 // in the middle of cells rather than on their edges.
 const mrpt::poses::CPose2D kRobotAtCellCentre(0.05, 0.05, 0.0);
@@ -40,9 +41,9 @@ TEST(LaserGridInserter, FreeThenOccupiedAlongTheCentralBeam)
 	const auto stats = inserter.insert(grid, kRobotAtCellCentre, scan);
 	EXPECT_EQ(stats.beams_hit, 5u);
 	// Central beam (index 2) points along +x: hit cell at x = 2.0 m.
-	EXPECT_NEAR(grid.occupancyProbability({20, 0}), 0.9, 1e-6);  // one occupied update from 0.5
+	EXPECT_NEAR(grid.occupancyProbability({20, 0}), 0.9, 1e-4);  // one occupied update from 0.5
 	// A cell crossed only by the central beam: exactly one free update, p = 0.3.
-	EXPECT_NEAR(grid.occupancyProbability({15, 0}), 0.3, 1e-6);
+	EXPECT_NEAR(grid.occupancyProbability({15, 0}), 0.3, 1e-4);
 	// Beyond the hit: untouched.
 	EXPECT_FALSE(grid.isObserved({21, 0}));
 	EXPECT_FALSE(grid.isObserved({25, 0}));
@@ -56,10 +57,10 @@ TEST(LaserGridInserter, BayesUpdatesAccumulateAndClampAt098)
 	inserter.insert(grid, kRobotAtCellCentre, scan);
 	inserter.insert(grid, kRobotAtCellCentre, uniformScan(3.0f));  // passes through (20,0)
 	// one hit then one free pass (eq. 85 in log-odds form)
-	EXPECT_NEAR(grid.logOdds({20, 0}), logit(0.9) + logit(0.3), 1e-5);
+	EXPECT_NEAR(grid.logOdds({20, 0}), logit(0.9) + logit(0.3), 2e-3);  // int16 fixed point, step 0.001
 	for (int k = 0; k < 20; ++k) inserter.insert(grid, kRobotAtCellCentre, scan);
-	EXPECT_NEAR(grid.occupancyProbability({20, 0}), 0.98, 1e-6);
-	EXPECT_NEAR(grid.occupancyProbability({15, 0}), 0.02, 1e-6);  // free side clamped at 1 - 0.98
+	EXPECT_NEAR(grid.occupancyProbability({20, 0}), 0.98, 1e-4);
+	EXPECT_NEAR(grid.occupancyProbability({15, 0}), 0.02, 1e-4);  // free side clamped at 1 - 0.98
 }
 
 TEST(LaserGridInserter, RangeLimitDropsOrClearsLongBeams)
@@ -122,7 +123,7 @@ TEST(LaserGridInserter, RaysAcrossTileBordersAndNegativeCoordinates)
 	inserter.insert(grid, mrpt::poses::CPose2D(-8.95, 0.05, M_PI), scan);
 	const TGlobalCell hit = grid.geometry().cellOf(-11.45, 0.05);
 	EXPECT_EQ(grid.geometry().tileOf(hit), (TTileIndex{-1, 0}));
-	EXPECT_NEAR(grid.occupancyProbability(hit), 0.9, 1e-6);
+	EXPECT_NEAR(grid.occupancyProbability(hit), 0.9, 1e-4);
 	EXPECT_LT(grid.occupancyProbability(grid.geometry().cellOf(-10.1, 0.0)), 0.5);
 	EXPECT_LT(grid.occupancyProbability(grid.geometry().cellOf(-10.0, 0.0)), 0.5);
 }
@@ -169,5 +170,5 @@ TEST(TiledOccupancyGrid, MemoryGrowsWithExploredAreaOnly)
 	for (int i = 0; i < 1000; ++i) grid.updateCell({i, 0}, 1.0f);
 	for (int i = 0; i < 1000; ++i) grid.updateCell({0, -2000 + i}, 1.0f);
 	EXPECT_EQ(grid.tileCount(), 12u);  // x cells 0..999 -> tiles 0..5; y cells -2000..-1001 -> tiles -10..-5
-	EXPECT_EQ(grid.memoryBytes(), 12u * 200 * 200 * 5);
+	EXPECT_EQ(grid.memoryBytes(), 12u * 200 * 200 * 2);  // int16 log-odds, unknown = sentinel
 }

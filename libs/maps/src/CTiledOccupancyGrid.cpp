@@ -11,21 +11,64 @@ float probabilityToLogOdds(double p) { return static_cast<float>(std::log(p / (1
 double logOddsToProbability(double logOdds) { return 1.0 / (1.0 + std::exp(-logOdds)); }
 
 CTile::CTile(int sizeCells)
-	: m_size(sizeCells),
-	  m_logOdds(static_cast<size_t>(sizeCells) * sizeCells, 0.0f),
-	  m_observed(static_cast<size_t>(sizeCells) * sizeCells, 0)
+	: m_size(sizeCells), m_cells(static_cast<size_t>(sizeCells) * sizeCells, kUnknownCell)
 {
 }
 
-size_t CTile::observedCount() const { return static_cast<size_t>(std::count(m_observed.begin(), m_observed.end(), 1)); }
+size_t CTile::observedCount() const
+{
+	return m_cells.size() - static_cast<size_t>(std::count(m_cells.begin(), m_cells.end(), kUnknownCell));
+}
 
 CTiledOccupancyGrid::CTiledOccupancyGrid(const TOptions& options)
 	: m_options(options),
 	  m_geometry(options.resolution_m, options.tile_size_cells),
-	  m_clampLogOdds(probabilityToLogOdds(options.max_occupied_probability))
+	  m_clampLogOdds(probabilityToLogOdds(options.max_occupied_probability)),
+	  m_clampCellUnits(toCellUnits(m_clampLogOdds))
 {
 	if (!(options.max_occupied_probability > 0.5 && options.max_occupied_probability < 1.0))
 		throw std::invalid_argument("CTiledOccupancyGrid: max_occupied_probability must be in (0.5, 1)");
+}
+
+CTiledOccupancyGrid::CTiledOccupancyGrid(const CTiledOccupancyGrid& o)
+	: m_options(o.m_options),
+	  m_geometry(o.m_geometry),
+	  m_clampLogOdds(o.m_clampLogOdds),
+	  m_clampCellUnits(o.m_clampCellUnits),
+	  m_creationOrder(o.m_creationOrder)
+{
+	for (const auto& kv : o.m_tiles) m_tiles.emplace(kv.first, std::make_unique<CTile>(*kv.second));
+}
+
+CTiledOccupancyGrid::CTiledOccupancyGrid(CTiledOccupancyGrid&& o) noexcept
+	: m_options(o.m_options),
+	  m_geometry(o.m_geometry),
+	  m_clampLogOdds(o.m_clampLogOdds),
+	  m_clampCellUnits(o.m_clampCellUnits),
+	  m_tiles(std::move(o.m_tiles)),
+	  m_creationOrder(std::move(o.m_creationOrder))
+{
+	o.clear();
+}
+
+CTiledOccupancyGrid& CTiledOccupancyGrid::operator=(CTiledOccupancyGrid&& o) noexcept
+{
+	if (this == &o) return *this;
+	m_options = o.m_options;
+	m_geometry = o.m_geometry;
+	m_clampLogOdds = o.m_clampLogOdds;
+	m_clampCellUnits = o.m_clampCellUnits;
+	m_tiles = std::move(o.m_tiles);
+	m_creationOrder = std::move(o.m_creationOrder);
+	m_cachedTile = nullptr;
+	o.clear();
+	return *this;
+}
+
+CTiledOccupancyGrid& CTiledOccupancyGrid::operator=(const CTiledOccupancyGrid& o)
+{
+	if (this != &o) *this = CTiledOccupancyGrid(o);
+	return *this;
 }
 
 CTile& CTiledOccupancyGrid::tileFor(const TTileIndex& t)
@@ -52,10 +95,7 @@ const CTile* CTiledOccupancyGrid::findTile(const TTileIndex& t) const
 void CTiledOccupancyGrid::updateCell(const TGlobalCell& c, float logOddsDelta)
 {
 	selectTileOf(c);
-	const TLocalCell local = cachedLocal(c);
-	float& l = m_cachedTile->logOdds(local);
-	l = std::clamp(l + logOddsDelta, -m_clampLogOdds, m_clampLogOdds);
-	m_cachedTile->markObserved(local);
+	m_cachedTile->update(cachedLocal(c), toCellUnits(logOddsDelta), m_clampCellUnits);
 }
 
 size_t CTiledOccupancyGrid::updateRay(const TGlobalCell& from, const TGlobalCell& to, float crossedDelta,
@@ -63,7 +103,8 @@ size_t CTiledOccupancyGrid::updateRay(const TGlobalCell& from, const TGlobalCell
 {
 	selectTileOf(from);
 	if (inCachedTile(to))
-		return updateRayInsideTile(*m_cachedTile, cachedLocal(from), cachedLocal(to), crossedDelta, endDelta);
+		return updateRayInsideTile(*m_cachedTile, cachedLocal(from), cachedLocal(to), toCellUnits(crossedDelta),
+								   toCellUnits(endDelta));
 	// The ray crosses a tile border: cell by cell, switching tiles as needed.
 	size_t cells = 0;
 	forEachCellOnSegment(from, to, [&](const TGlobalCell& c) {
@@ -74,13 +115,12 @@ size_t CTiledOccupancyGrid::updateRay(const TGlobalCell& from, const TGlobalCell
 }
 
 size_t CTiledOccupancyGrid::updateRayInsideTile(CTile& tile, const TLocalCell& a, const TLocalCell& b,
-												float crossedDelta, float endDelta)
+												int crossedDelta, int endDelta)
 {
 	// Bresenham on the tile's row-major arrays, stepping the linear index.
 	const int n = tile.size();
-	float* logOdds = tile.logOddsData();
-	uint8_t* observed = tile.observedData();
-	const float clampValue = m_clampLogOdds;
+	TLogOddsCell* data = tile.data();
+	const int clampValue = m_clampCellUnits;
 	const int dx = std::abs(b.lx - a.lx), dy = -std::abs(b.ly - a.ly);
 	const int stepX = a.lx < b.lx ? 1 : -1, stepY = a.ly < b.ly ? n : -n;
 	int err = dx + dy;
@@ -89,8 +129,7 @@ size_t CTiledOccupancyGrid::updateRayInsideTile(CTile& tile, const TLocalCell& a
 	size_t cells = 1;
 	for (; index != endIndex; ++cells)
 	{
-		logOdds[index] = std::clamp(logOdds[index] + crossedDelta, -clampValue, clampValue);
-		observed[index] = 1;
+		CTile::add(data[index], crossedDelta, clampValue);
 		const int e2 = 2 * err;
 		if (e2 >= dy)
 		{
@@ -103,8 +142,7 @@ size_t CTiledOccupancyGrid::updateRayInsideTile(CTile& tile, const TLocalCell& a
 			index += stepY;
 		}
 	}
-	logOdds[endIndex] = std::clamp(logOdds[endIndex] + endDelta, -clampValue, clampValue);
-	observed[endIndex] = 1;
+	CTile::add(data[endIndex], endDelta, clampValue);
 	return cells;
 }
 

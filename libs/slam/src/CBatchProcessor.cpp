@@ -26,6 +26,9 @@ std::vector<std::string> CBatchProcessor::knownSections()
 {
 	auto sections = CMappingPipeline::sections();
 	sections.push_back("output");
+	// Documented in hslam-default.ini for the sonar components (libs/maps
+	// CSonarGridInserter, libs/sonar CTbfCornerDetector); not used here yet.
+	sections.insert(sections.end(), {"sonar_model", "tbf"});
 	return sections;
 }
 

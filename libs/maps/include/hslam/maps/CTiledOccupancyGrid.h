@@ -8,38 +8,70 @@
  *     l <- l + log(p / (1 - p)),
  * clamped to +-log(Max_occupied / (1 - Max_occupied)) (Max_occupied = 0.98,
  * thesis 4.6.2 iii), which keeps every cell able to change its mind. A cell
- * never updated is "unknown" (distinct from an observed cell at 0.5). */
+ * never updated is "unknown" (distinct from an observed cell at 0.5).
+ * Cells are int16 fixed point, 2 bytes each (see CTile). */
 #pragma once
 
 #include <hslam/maps/CTiledGridGeometry.h>
 
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <cstdint>
 #include <memory>
 #include <unordered_map>
 #include <vector>
 
 namespace hslam::maps
 {
-/** Storage of one tile: log-odds of occupancy and an observed flag per cell. */
+/** Log-odds are stored like MRPT's COccupancyGridMap2D does: as int16 in
+ * fixed point (kLogOddsScale units per nat), 2 bytes per cell; the value
+ * kUnknownCell marks a never-observed cell, so no separate observed flag is
+ * needed (the foundation used float + flag = 5 B/cell). Quantisation step
+ * 0.001 in log-odds is far below any sensor update (|log(0.3/0.7)| = 0.85). */
+using TLogOddsCell = int16_t;
+constexpr float kLogOddsScale = 1000.0f;
+constexpr TLogOddsCell kUnknownCell = INT16_MIN;
+
+inline TLogOddsCell toCellUnits(float logOdds)
+{
+	const float units = logOdds * kLogOddsScale;  // round half away from zero, inline (std::lround is a libm call)
+	return static_cast<TLogOddsCell>(units >= 0 ? units + 0.5f : units - 0.5f);
+}
+
+/** Storage of one tile: fixed-point log-odds of occupancy per cell, or
+ * kUnknownCell if never observed. */
 class CTile
 {
    public:
 	explicit CTile(int sizeCells);
-	float& logOdds(const TLocalCell& c) { return m_logOdds[index(c)]; }
 	/** Raw storage for tight loops: row-major, index = ly * N + lx. */
-	float* logOddsData() { return m_logOdds.data(); }
-	uint8_t* observedData() { return m_observed.data(); }
+	TLogOddsCell* data() { return m_cells.data(); }
+	const TLogOddsCell* data() const { return m_cells.data(); }
 	int size() const { return m_size; }
-	float logOdds(const TLocalCell& c) const { return m_logOdds[index(c)]; }
-	bool observed(const TLocalCell& c) const { return m_observed[index(c)] != 0; }
-	void markObserved(const TLocalCell& c) { m_observed[index(c)] = 1; }
+	/** Log-odds (0 for unknown cells). */
+	float logOdds(const TLocalCell& c) const
+	{
+		const TLogOddsCell v = m_cells[index(c)];
+		return v == kUnknownCell ? 0.0f : static_cast<float>(v) / kLogOddsScale;
+	}
+	bool observed(const TLocalCell& c) const { return m_cells[index(c)] != kUnknownCell; }
+	/** Adds `delta` (cell units) to a cell, unknown counting as 0, clamped to +-clamp. */
+	static void add(TLogOddsCell& v, int delta, int clamp)
+	{
+		const int base = (v == kUnknownCell) ? 0 : v;
+		v = static_cast<TLogOddsCell>(std::clamp(base + delta, -clamp, clamp));
+	}
+	void update(const TLocalCell& c, int delta, int clamp) { add(m_cells[index(c)], delta, clamp); }
+	/** Sets a cell's raw value (deserialisation). */
+	void setRaw(const TLocalCell& c, TLogOddsCell v) { m_cells[index(c)] = v; }
 	size_t observedCount() const;
-	size_t memoryBytes() const { return m_logOdds.size() * (sizeof(float) + sizeof(uint8_t)); }
+	size_t memoryBytes() const { return m_cells.size() * sizeof(TLogOddsCell); }
 
    private:
 	size_t index(const TLocalCell& c) const { return static_cast<size_t>(c.ly) * m_size + c.lx; }
 	int m_size;
-	std::vector<float> m_logOdds;
-	std::vector<uint8_t> m_observed;
+	std::vector<TLogOddsCell> m_cells;
 };
 
 class CTiledOccupancyGrid
@@ -63,6 +95,12 @@ class CTiledOccupancyGrid
 
 	CTiledOccupancyGrid() : CTiledOccupancyGrid(TOptions()) {}
 	explicit CTiledOccupancyGrid(const TOptions& options);
+	/** Deep copies (MRPT maps must be clonable). */
+	CTiledOccupancyGrid(const CTiledOccupancyGrid& o);
+	CTiledOccupancyGrid& operator=(const CTiledOccupancyGrid& o);
+	/** Moves leave the source empty (its tile cache reset). */
+	CTiledOccupancyGrid(CTiledOccupancyGrid&& o) noexcept;
+	CTiledOccupancyGrid& operator=(CTiledOccupancyGrid&& o) noexcept;
 
 	const TOptions& options() const { return m_options; }
 	const CTiledGridGeometry& geometry() const { return m_geometry; }
@@ -96,6 +134,9 @@ class CTiledOccupancyGrid
 
 	float clampLogOdds() const { return m_clampLogOdds; }
 
+	/** Raw access for serialisation: the tile (created if needed). */
+	CTile& tileForWriting(const TTileIndex& t) { return tileFor(t); }
+
    private:
 	CTile& tileFor(const TTileIndex& t);
 	/** Makes the tile holding `c` the cached one (created if needed). */
@@ -110,12 +151,13 @@ class CTiledOccupancyGrid
 	}
 	/** Local cell of `c` in the cached tile (no divisions). */
 	TLocalCell cachedLocal(const TGlobalCell& c) const { return {c.gx - m_cachedBounds.gxMin, c.gy - m_cachedBounds.gyMin}; }
-	size_t updateRayInsideTile(CTile& tile, const TLocalCell& a, const TLocalCell& b, float crossedDelta,
-							   float endDelta);
+	size_t updateRayInsideTile(CTile& tile, const TLocalCell& a, const TLocalCell& b, int crossedDelta,
+							   int endDelta);
 
 	TOptions m_options;
 	CTiledGridGeometry m_geometry;
 	float m_clampLogOdds;
+	int m_clampCellUnits;  //!< m_clampLogOdds in cell units
 	std::unordered_map<TTileIndex, std::unique_ptr<CTile>, TTileIndexHash> m_tiles;
 	std::vector<TTileIndex> m_creationOrder;
 	// Last tile touched: consecutive cells of a ray are almost always in it.

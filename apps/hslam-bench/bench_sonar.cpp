@@ -1,0 +1,591 @@
+/* hslam-bench sonar: the thesis' sonar work (4.3 TBF, 4.6 grid sonar models)
+ * measured on simulated runs (hslam::sim: P3-DX front sonar ring with
+ * specular/multipath echoes, LMS200 laser, exact world geometry), all in one
+ * run:
+ *   1. fast vs standard sonar model (thesis 4.6.2 iii / 4.6.3): time per ring
+ *      update (8 readings) and map quality against the ground-truth map;
+ *   2. laser only, sonar only and fused maps; our tiled grid vs MRPT's
+ *      COccupancyGridMap2D on the same laser data (ground-truth agreement,
+ *      insert time), and memory of a long sparse run;
+ *   3. TBF corners: precision / recall against the scene's true corners
+ *      (within 0.2 m) before and after the stability, clustering and cone-rim
+ *      filters.
+ * Maps are built with the TRUE poses (the models are measured, not the
+ * localisation). Ground truth map: a cell is occupied if a wall or a circle
+ * passes through it. Scores (same for every map):
+ *   agreement      = correct known cells / known cells (scored: the free
+ *                    space reachable from the start and the cells next to
+ *                    obstacles; box interiors are not scored), where an occupied
+ *                    cell is correct if a true obstacle is within one cell and a
+ *                    free cell is correct if its own cell holds no obstacle;
+ *   false occupied = occupied cells with no obstacle within one cell;
+ *   walls found    = true obstacle cells within 3 m of the path that have an
+ *                    occupied cell within one cell.
+ * The scene's convex corners and wall ends get 2 cm cylinders: real edges
+ * diffract sound back from any direction (the point reflectors TBF relies
+ * on), the simulator's planes are purely specular. Images go to outDir. */
+#include "bench_common.h"
+
+#include <hslam/maps/CSonarGridInserter.h>
+#include <hslam/maps/grid_comparison.h>
+#include <hslam/maps/grid_rendering.h>
+#include <hslam/sim/CSimulator.h>
+#include <hslam/sonar/CTbfCornerDetector.h>
+#include <mrpt/poses/CPose3D.h>
+
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <unordered_set>
+
+namespace hslam::bench
+{
+namespace
+{
+using mrpt::math::TPoint2D;
+
+struct TPosedSonar
+{
+	mrpt::poses::CPose2D pose;
+	mrpt::obs::CObservationRange obs;
+};
+
+struct TSimRun
+{
+	std::string name;
+	sim::TScene scene;
+	std::vector<TPosedScan> scans;
+	std::vector<TPosedSonar> sonars;
+	std::vector<mrpt::math::TPose2D> path;
+};
+
+class CCollector : public sim::ISimulationSink
+{
+   public:
+	explicit CCollector(TSimRun& run) : m_run(run) {}
+	void onLaserScan(const mrpt::obs::CObservation2DRangeScan& obs, const std::vector<sim::TObjectTag>&,
+					 const sim::TSimulationFrame& f) override
+	{
+		m_run.scans.push_back({mrpt::poses::CPose2D(f.true_pose), obs});
+		m_run.path.push_back(f.true_pose);
+	}
+	void onSonar(const mrpt::obs::CObservationRange& obs, const std::vector<sim::TSonarEcho>&,
+				 const sim::TSimulationFrame& f) override
+	{
+		m_run.sonars.push_back({mrpt::poses::CPose2D(f.true_pose), obs});
+	}
+
+   private:
+	TSimRun& m_run;
+};
+
+TSimRun simulate(const std::string& name, const std::string& sceneText, const std::string& waypoints,
+				 const mrpt::math::TPose2D& start, double speed_mps, bool edgeCylinders)
+{
+	TSimRun run;
+	run.name = name;
+	run.scene = sim::parseSceneText(sceneText, name);
+	if (edgeCylinders)
+		for (const auto& c : run.scene.corners)
+			if (c.kind != sim::ECornerKind::concave) run.scene.world.addCircle({c.point, 0.02});
+	sim::TSimulatorConfig cfg;
+	cfg.robot.start_x_m = start.x, cfg.robot.start_y_m = start.y, cfg.robot.start_yaw_rad = start.phi;
+	cfg.path.waypoints = waypoints;
+	cfg.path.follower.cruise_speed_mps = speed_mps;
+	cfg.simulation.settle_s = 0.2;
+	sim::CSimulator simulator(cfg, run.scene);
+	CCollector sink(run);
+	simulator.run(sink);
+	return run;
+}
+
+// ------------------------------------------------------------------ ground truth
+struct TCellHash
+{
+	size_t operator()(const maps::TGlobalCell& c) const
+	{
+		return std::hash<long long>()((static_cast<long long>(c.gx) << 32) ^ static_cast<unsigned>(c.gy));
+	}
+};
+using TCellSet = std::unordered_set<maps::TGlobalCell, TCellHash>;
+
+struct TTruth
+{
+	TCellSet occupied, dilated;  //!< obstacle cells; and every cell within one cell of one
+	TCellSet reachable;  //!< free cells connected to the start (not inside boxes or outside the building)
+	TCellSet nearPath;  //!< obstacle cells within 3 m of the path
+};
+
+TTruth groundTruth(const TSimRun& run, const maps::CTiledGridGeometry& geo)
+{
+	TTruth t;
+	const double step = 0.25 * geo.resolution_m();
+	for (const auto& s : run.scene.world.segments())
+	{
+		const double len = std::hypot(s.b.x - s.a.x, s.b.y - s.a.y);
+		const int n = static_cast<int>(std::ceil(len / step));
+		for (int i = 0; i <= n; ++i)
+		{
+			const double u = n ? static_cast<double>(i) / n : 0.0;
+			t.occupied.insert(geo.cellOf(s.a.x + u * (s.b.x - s.a.x), s.a.y + u * (s.b.y - s.a.y)));
+		}
+	}
+	for (const auto& c : run.scene.world.circles())
+		for (int i = 0; i < 64; ++i)
+			t.occupied.insert(geo.cellOf(c.centre.x + c.radius_m * std::cos(i * M_PI / 32),
+										 c.centre.y + c.radius_m * std::sin(i * M_PI / 32)));
+	for (const auto& c : t.occupied)
+		for (int dy = -1; dy <= 1; ++dy)
+			for (int dx = -1; dx <= 1; ++dx) t.dilated.insert({c.gx + dx, c.gy + dy});
+	// Flood fill of free space from the start (4-connected, inside the bounds + 1 m).
+	const auto b = run.scene.world.bounds();
+	const auto lo = geo.cellOf(b.min_x - 1, b.min_y - 1), hi = geo.cellOf(b.max_x + 1, b.max_y + 1);
+	std::vector<maps::TGlobalCell> stack{geo.cellOf(run.path.front().x, run.path.front().y)};
+	while (!stack.empty())
+	{
+		const maps::TGlobalCell c = stack.back();
+		stack.pop_back();
+		if (c.gx < lo.gx || c.gx > hi.gx || c.gy < lo.gy || c.gy > hi.gy) continue;
+		if (t.occupied.count(c) || !t.reachable.insert(c).second) continue;
+		stack.push_back({c.gx + 1, c.gy}), stack.push_back({c.gx - 1, c.gy});
+		stack.push_back({c.gx, c.gy + 1}), stack.push_back({c.gx, c.gy - 1});
+	}
+	for (const auto& c : t.occupied)
+	{
+		const auto p = geo.cellCentre(c);
+		for (size_t i = 0; i < run.path.size(); i += 5)
+			if (std::hypot(p.x - run.path[i].x, p.y - run.path[i].y) <= 3.0)
+			{
+				t.nearPath.insert(c);
+				break;
+			}
+	}
+	return t;
+}
+
+struct TTruthScore
+{
+	size_t known = 0, correct = 0, occupied = 0, false_occupied = 0, walls_near = 0, walls_found = 0;
+	double agreement() const { return known ? static_cast<double>(correct) / known : 0.0; }
+	double wallsFound() const { return walls_near ? static_cast<double>(walls_found) / walls_near : 0.0; }
+};
+
+/** classify(cell) -> ECellClass for any map. */
+template <class Classify>
+TTruthScore scoreAgainstTruth(const maps::TCellBounds& b, const TTruth& truth, Classify&& classify)
+{
+	TTruthScore s;
+	TCellSet occupiedCells;
+	for (int gy = b.gyMin; gy <= b.gyMax; ++gy)
+		for (int gx = b.gxMin; gx <= b.gxMax; ++gx)
+		{
+			const maps::TGlobalCell c{gx, gy};
+			const maps::ECellClass k = classify(c);
+			if (k == maps::ECellClass::unknown) continue;
+			// Cells inside closed obstacles or outside the building are not scored.
+			if (!truth.reachable.count(c) && !truth.dilated.count(c)) continue;
+			++s.known;
+			if (k == maps::ECellClass::occupied)
+			{
+				++s.occupied;
+				occupiedCells.insert(c);
+				if (truth.dilated.count(c))
+					++s.correct;
+				else
+					++s.false_occupied;
+			}
+			else if (!truth.occupied.count(c))
+				++s.correct;
+		}
+	for (const auto& w : truth.nearPath)
+	{
+		++s.walls_near;
+		bool found = false;
+		for (int dy = -1; dy <= 1 && !found; ++dy)
+			for (int dx = -1; dx <= 1 && !found; ++dx) found = occupiedCells.count({w.gx + dx, w.gy + dy}) > 0;
+		s.walls_found += found;
+	}
+	return s;
+}
+
+TTruthScore scoreOurs(const maps::CTiledOccupancyGrid& g, const TTruth& truth)
+{
+	return scoreAgainstTruth(g.observedBounds(), truth, [&](const maps::TGlobalCell& c) {
+		return g.isObserved(c) ? maps::classifyOccupancy(g.occupancyProbability(c), 0.01) : maps::ECellClass::unknown;
+	});
+}
+
+TTruthScore scoreMrpt(const mrpt::maps::COccupancyGridMap2D& m, const maps::CTiledGridGeometry& geo,
+					  const TTruth& truth)
+{
+	const maps::TCellBounds b{geo.cellOf(m.getXMin() + 1e-6, 0).gx, geo.cellOf(m.getXMax() - 1e-6, 0).gx,
+							  geo.cellOf(0, m.getYMin() + 1e-6).gy, geo.cellOf(0, m.getYMax() - 1e-6).gy};
+	return scoreAgainstTruth(b, truth, [&](const maps::TGlobalCell& c) {
+		const auto p = geo.cellCentre(c);
+		return maps::classifyOccupancy(1.0 - m.getPos(static_cast<float>(p.x), static_cast<float>(p.y)), 0.01);
+	});
+}
+
+// ------------------------------------------------------------------ map building
+void insertSonars(maps::CTiledOccupancyGrid& grid, const std::vector<TPosedSonar>& sonars,
+				  const maps::CSonarGridInserter& inserter)
+{
+	for (const auto& s : sonars) inserter.insert(grid, s.pose, s.obs);
+}
+
+maps::CSonarGridInserter::TOptions sonarOptions(const std::string& model, double weight)
+{
+	maps::CSonarGridInserter::TOptions o;
+	o.model = model;
+	o.weight = weight;
+	return o;
+}
+
+// ------------------------------------------------------------------ TBF scoring
+struct TTbfScore
+{
+	size_t output = 0, true_positive = 0, observable = 0, recalled = 0;
+	double precision() const { return output ? static_cast<double>(true_positive) / output : 0.0; }
+	double recall() const { return observable ? static_cast<double>(recalled) / observable : 0.0; }
+	void add(const TTbfScore& o)
+	{
+		output += o.output, true_positive += o.true_positive, observable += o.observable, recalled += o.recalled;
+	}
+};
+
+/** True corners some transducer had in its cone, in line of sight, within 3 m. */
+std::vector<TPoint2D> observableCorners(const TSimRun& run, const sim::CSonarSimulator& ring)
+{
+	std::vector<TPoint2D> out;
+	for (const auto& c : run.scene.corners)
+	{
+		bool seen = false;
+		for (size_t i = 0; i < run.sonars.size() && !seen; i += 2)
+			for (const auto& m : ring.ring())
+			{
+				const auto s = run.sonars[i].pose + mrpt::poses::CPose2D(m.x_m, m.y_m, m.yaw_rad);
+				const double d = std::hypot(c.point.x - s.x(), c.point.y - s.y());
+				const double a = std::atan2(c.point.y - s.y(), c.point.x - s.x());
+				if (d > 3.0 || std::abs(mrpt::math::wrapToPi(a - s.phi())) > 0.5 * ring.options().cone_rad) continue;
+				const auto hit = run.scene.world.castRay({s.x(), s.y()}, a, d + 0.1, false);
+				if (hit.hit && hit.range_m < d - 0.05) continue;
+				seen = true;
+				break;
+			}
+		if (seen) out.push_back(c.point);
+	}
+	return out;
+}
+
+TTbfScore scoreCorners(const std::vector<sonar::TTbfCorner>& found, const std::vector<TPoint2D>& truthCorners,
+					   const std::vector<TPoint2D>& allTrue)
+{
+	auto near = [](const TPoint2D& p, const TPoint2D& q) { return std::hypot(p.x - q.x, p.y - q.y) <= 0.2; };
+	TTbfScore s;
+	s.output = found.size();
+	for (const auto& f : found)
+		s.true_positive += std::any_of(allTrue.begin(), allTrue.end(), [&](const TPoint2D& t) { return near(f.point, t); });
+	s.observable = truthCorners.size();
+	for (const auto& t : truthCorners)
+		s.recalled += std::any_of(found.begin(), found.end(), [&](const sonar::TTbfCorner& f) { return near(f.point, t); });
+	return s;
+}
+
+sonar::CTbfCornerDetector runTbf(const TSimRun& run, const sonar::CTbfCornerDetector::TOptions& o)
+{
+	sonar::CTbfCornerDetector tbf(o);
+	for (const auto& s : run.sonars) tbf.process(s.pose, s.obs);
+	return tbf;
+}
+
+// ------------------------------------------------------------------ images
+maps::TImageFrame sceneFrame(const TSimRun& run, const maps::CTiledGridGeometry& geo, int ppc)
+{
+	const auto b = run.scene.world.bounds();
+	maps::TImageFrame f;
+	const auto lo = geo.cellOf(b.min_x - 0.5, b.min_y - 0.5), hi = geo.cellOf(b.max_x + 0.5, b.max_y + 0.5);
+	f.cells = {lo.gx, hi.gx, lo.gy, hi.gy};
+	f.resolution_m = geo.resolution_m();
+	f.pixels_per_cell = ppc;
+	return f;
+}
+
+void saveMap(const maps::CTiledOccupancyGrid& g, const TSimRun& run, const std::string& file)
+{
+	const auto frame = sceneFrame(run, g.geometry(), 4);
+	auto img = maps::renderGrid(g, frame);
+	maps::drawTrajectory(img, frame, run.path, mrpt::img::TColor(230, 120, 0), 1);
+	img.saveToFile(file);
+}
+
+/** Ground truth (black walls on white), sonar reading end points (red),
+ * true corners (blue circles), TBF corners (green crosses, size ~ support). */
+void saveTbfImage(const TSimRun& run, const maps::CTiledGridGeometry& geo, const TTruth& truth,
+				  const sonar::CTbfCornerDetector& tbf, const std::string& file)
+{
+	const auto frame = sceneFrame(run, geo, 4);
+	mrpt::img::CImage img(frame.widthPx(), frame.heightPx(), mrpt::img::CH_RGB);
+	img.filledRectangle(0, 0, frame.widthPx() - 1, frame.heightPx() - 1, mrpt::img::TColor(255, 255, 255));
+	auto px = [&](double x, double y) {
+		double c, r;
+		frame.worldToPixel(x, y, c, r);
+		return std::pair<int, int>(static_cast<int>(c), static_cast<int>(r));
+	};
+	for (const auto& c : truth.occupied)
+	{
+		const auto p = geo.cellCentre(c);
+		const auto [x, y] = px(p.x, p.y);
+		img.filledRectangle(x - 2, y - 2, x + 1, y + 1, mrpt::img::TColor(0, 0, 0));
+	}
+	for (size_t i = 0; i < run.sonars.size(); i += 2)
+		for (const auto& m : run.sonars[i].obs.sensedData)
+		{
+			if (m.sensedDistance >= 3.0f) continue;
+			const auto s = run.sonars[i].pose + mrpt::poses::CPose2D(m.sensorPose.x, m.sensorPose.y, m.sensorPose.yaw);
+			const auto [x, y] = px(s.x() + m.sensedDistance * std::cos(s.phi()), s.y() + m.sensedDistance * std::sin(s.phi()));
+			img.setPixel(x, y, mrpt::img::TColor(220, 0, 0));
+		}
+	maps::drawTrajectory(img, frame, run.path, mrpt::img::TColor(120, 120, 120), 1);
+	for (const auto& c : run.scene.corners)
+	{
+		const auto [x, y] = px(c.point.x, c.point.y);
+		img.drawCircle(x, y, 8, mrpt::img::TColor(0, 0, 255), 1);  // 8 px = 0.2 m
+	}
+	for (const auto& c : tbf.corners())
+	{
+		const auto [x, y] = px(c.point.x, c.point.y);
+		img.drawMark(x, y, mrpt::img::TColor(0, 170, 0), 'x', 4 + std::min(8, c.support / 4), 2);
+	}
+	img.saveToFile(file);
+}
+
+// ------------------------------------------------------------------ scenes
+/* Run 1: an office room (10 m x 7 m) with three blocks and a partition wall,
+ * driven once round a loop (thesis 4.3.5 / 4.6.3: the robot moves in the
+ * room while recording sonar readings). Run 2: a corridor with niches and a
+ * side room (thesis fig. 138-like exploration). */
+const char* kOfficeScene = R"(room 0 0 10 0 10 7 0 7
+box 3 2.5 1.2 0.8
+box 7 4.5 1.0 1.0
+box 2.5 5.5 0.8 1.0
+wall 5 0 5 2
+)";
+const char* kOfficePath = "4 1; 4 3.5; 8.5 3.3; 8.5 6; 4.5 6.2; 4 4.2; 1 4.2; 1 1";
+
+const char* kCorridorScene = R"(polyline 0 0 4 0 4 -1 5.5 -1 5.5 0 12 0 12 -3 16 -3 16 4 12 4 12 2 9 2 9 3 7.5 3 7.5 2 0 2
+)";
+const char* kCorridorPath = "11 1; 14 0.5; 14 2.5; 11 1; 1 1";
+}  // namespace
+
+int runSonarSuite(int repetitions, const std::string& outDir)
+{
+	std::filesystem::create_directories(outDir);
+	std::vector<TSimRun> runs;
+	runs.push_back(simulate("office", kOfficeScene, kOfficePath, {1, 1, 0}, 0.4, true));
+	runs.push_back(simulate("corridor", kCorridorScene, kCorridorPath, {1, 1, 0}, 0.4, true));
+	const sim::CSonarSimulator ring;  // the simulator's ring geometry / cone (defaults)
+
+	// ---------------------------------------------------------- 1. sonar models
+	std::cout << "Suite sonar: thesis sonar models (4.6) and TBF corners (4.3) on simulated runs (true poses), best of "
+			  << repetitions << " runs\n\n";
+	std::cout << "1. Sonar grid models (range limit 3 m, cone " << ring.options().cone_rad * 180 / M_PI
+			  << " deg, 0.1 m cells); agreement with the ground-truth map\n"
+			  << std::left << std::setw(10) << "run" << std::setw(16) << "map" << std::right << std::setw(8) << "updates"
+			  << std::setw(12) << "ms/update" << std::setw(11) << "agreement" << std::setw(9) << "known" << std::setw(11)
+			  << "false occ" << std::setw(13) << "walls found" << "\n";
+	double fastTime = 0, standardTime = 0, wholeTileTime = 0;
+	size_t fastKnown = 0, fastCorrect = 0, stdKnown = 0, stdCorrect = 0;
+	auto row = [](const std::string& run, const std::string& map, size_t updates, double msPerUpdate,
+				  const TTruthScore& s) {
+		std::cout << std::left << std::setw(10) << run << std::setw(16) << map << std::right << std::setw(8) << updates
+				  << std::fixed << std::setprecision(3) << std::setw(12) << msPerUpdate << std::setprecision(4)
+				  << std::setw(11) << s.agreement() << std::setw(9) << s.known << std::setw(11) << s.false_occupied
+				  << std::setprecision(3) << std::setw(13) << s.wallsFound() << "\n";
+	};
+	struct TLaserRow
+	{
+		std::string run;
+		TTruthScore ours, mrpt;
+		double ours_us = 0, mrpt_us = 0;
+	};
+	std::vector<TLaserRow> laserRows;
+	for (const auto& run : runs)
+	{
+		maps::CTiledOccupancyGrid probe;
+		const TTruth truth = groundTruth(run, probe.geometry());
+		const size_t n = run.sonars.size();
+		maps::CTiledOccupancyGrid fastMap, stdMap, laserMap, fusedMap;
+		const maps::CSonarGridInserter fast(sonarOptions("fast", 1.0)), standard(sonarOptions("standard", 1.0));
+		auto wholeTileOptions = sonarOptions("standard", 1.0);
+		wholeTileOptions.standard_scans_whole_tile = true;
+		const maps::CSonarGridInserter standardWholeTile(wholeTileOptions);
+		const double tFast = bestTimeOf(repetitions, [&] {
+			maps::CTiledOccupancyGrid g;
+			insertSonars(g, run.sonars, fast);
+		});
+		const double tStd = bestTimeOf(repetitions, [&] {
+			maps::CTiledOccupancyGrid g;
+			insertSonars(g, run.sonars, standard);
+		});
+		maps::CTiledOccupancyGrid wholeTileMap;
+		const double tWhole = bestTimeOf(1, [&] { insertSonars(wholeTileMap, run.sonars, standardWholeTile); });
+		insertSonars(fastMap, run.sonars, fast);
+		insertSonars(stdMap, run.sonars, standard);
+		fastTime += tFast, standardTime += tStd, wholeTileTime += tWhole;
+		const TTruthScore sf = scoreOurs(fastMap, truth), ss = scoreOurs(stdMap, truth);
+		fastKnown += sf.known, fastCorrect += sf.correct, stdKnown += ss.known, stdCorrect += ss.correct;
+		row(run.name, "sonar fast", n, 1e3 * tFast / n, sf);
+		row(run.name, "sonar standard", n, 1e3 * tStd / n, ss);
+		row(run.name, "  (whole tile)", n, 1e3 * tWhole / n, scoreOurs(wholeTileMap, truth));
+
+		// Laser only (thesis laser model, 3 m), and fused with the default sonar weight.
+		maps::CLaserGridInserter laser;  // thesis defaults: long beams dropped
+		for (const auto& s : run.scans) laser.insert(laserMap, s.pose, s.scan);
+		row(run.name, "laser", run.scans.size(), 0.0, scoreOurs(laserMap, truth));
+		const maps::CSonarGridInserter fusedSonar;  // defaults: fast, weight 0.1
+		for (const auto& s : run.scans) laser.insert(fusedMap, s.pose, s.scan);
+		insertSonars(fusedMap, run.sonars, fusedSonar);
+		row(run.name, "laser+sonar", run.scans.size() + n, 0.0, scoreOurs(fusedMap, truth));
+		for (const double w : {0.25, 0.5})
+		{
+			maps::CTiledOccupancyGrid g;
+			for (const auto& s : run.scans) laser.insert(g, s.pose, s.scan);
+			insertSonars(g, run.sonars, maps::CSonarGridInserter(sonarOptions("fast", w)));
+			std::ostringstream name;
+			name << "  sonar w=" << w;
+			row(run.name, name.str(), run.scans.size() + n, 0.0, scoreOurs(g, truth));
+		}
+		// The same with the laser also clearing up to 3 m along its long beams.
+		maps::CTiledOccupancyGrid fusedClearMap;
+		maps::CLaserGridInserter clearingLaser(ourLaserOptions());
+		for (const auto& s : run.scans) clearingLaser.insert(fusedClearMap, s.pose, s.scan);
+		insertSonars(fusedClearMap, run.sonars, fusedSonar);
+		row(run.name, "laser+sonar *", run.scans.size() + n, 0.0, scoreOurs(fusedClearMap, truth));
+
+		saveMap(fastMap, run, outDir + "/" + run.name + "_sonar_fast.png");
+		saveMap(stdMap, run, outDir + "/" + run.name + "_sonar_standard.png");
+		saveMap(laserMap, run, outDir + "/" + run.name + "_laser.png");
+		saveMap(fusedMap, run, outDir + "/" + run.name + "_fused.png");
+
+		// Laser: tiled grid vs MRPT, same scans, comparable settings (bench_common.h).
+		TLaserRow lr;
+		lr.run = run.name;
+		maps::CTiledOccupancyGrid ours;
+		insertOurs(ours, run.scans);
+		auto mrptGrid = makeMrptGrid(ours);
+		insertMrpt(mrptGrid, run.scans);
+		lr.ours = scoreOurs(ours, truth);
+		lr.mrpt = scoreMrpt(mrptGrid, ours.geometry(), truth);
+		const double perScan = 1e6 / static_cast<double>(run.scans.size());
+		lr.ours_us = perScan * bestTimeOf(repetitions, [&] {
+			maps::CTiledOccupancyGrid g;
+			insertOurs(g, run.scans);
+		});
+		lr.mrpt_us = perScan * bestTimeOf(repetitions, [&] {
+			auto g = makeMrptGrid(ours);
+			insertMrpt(g, run.scans);
+		});
+		laserRows.push_back(lr);
+	}
+
+	// ---------------------------------------------------------- 2. laser tiled vs MRPT
+	std::cout << "   (whole tile) = standard model testing every cell of the sensor's 200x200 tile per reading, as the"
+				 " thesis' loop (4.6.3)\n   laser+sonar = fused, sonar weight 0.1 (default); sonar w = other weights\n   * = laser long beams clear free space up to 3 m (insert_free_beyond_range)\n";
+	std::cout << "\n2. Laser maps, tiled grid vs MRPT COccupancyGridMap2D (same scans, 3 m range), against ground truth\n"
+			  << std::left << std::setw(10) << "run" << std::right << std::setw(13) << "ours agree" << std::setw(13)
+			  << "MRPT agree" << std::setw(12) << "ours fo" << std::setw(12) << "MRPT fo" << std::setw(11) << "ours us"
+			  << std::setw(11) << "MRPT us" << "\n";
+	double sumOursUs = 0, sumMrptUs = 0;
+	TTruthScore oursAll, mrptAll;
+	for (const auto& r : laserRows)
+	{
+		std::cout << std::left << std::setw(10) << r.run << std::right << std::fixed << std::setprecision(4)
+				  << std::setw(13) << r.ours.agreement() << std::setw(13) << r.mrpt.agreement() << std::setw(12)
+				  << r.ours.false_occupied << std::setw(12) << r.mrpt.false_occupied << std::setprecision(1)
+				  << std::setw(11) << r.ours_us << std::setw(11) << r.mrpt_us << "\n";
+		sumOursUs += r.ours_us, sumMrptUs += r.mrpt_us;
+		oursAll.known += r.ours.known, oursAll.correct += r.ours.correct;
+		mrptAll.known += r.mrpt.known, mrptAll.correct += r.mrpt.correct;
+	}
+
+	// Large sparse run: an L-shaped corridor in a 200 m x 200 m building.
+	const TSimRun sparse = simulate("sparse", "polyline -95 -81 81 -81 81 95\npolyline -95 -79 79 -79 79 95\n",
+									"80 -80; 80 90", {-92, -80, 0}, 1.0, false);
+	maps::CTiledOccupancyGrid sparseOurs;
+	insertOurs(sparseOurs, sparse.scans);
+	const auto sparseMrpt = makeMrptGrid(sparseOurs);
+	const size_t oursBytes = sparseOurs.memoryBytes(), mrptBytes = mrptGridBytes(sparseMrpt);
+	std::cout << "   sparse L corridor (" << sparse.scans.size() << " scans, 172 m + 170 m): ours " << sparseOurs.tileCount()
+			  << " tiles = " << oursBytes / 1024 << " KiB, MRPT one rectangle " << sparseMrpt.getSizeX() << "x"
+			  << sparseMrpt.getSizeY() << " = " << mrptBytes / 1024 << " KiB\n";
+
+	// ---------------------------------------------------------- 3. TBF
+	struct TVariant
+	{
+		std::string name;
+		bool stability, clustering;
+		double coneFraction;
+	};
+	const std::vector<TVariant> variants{{"in-cone only (basic TBF)", false, false, 1.0},
+										 {"+ stability 20 deg", true, false, 1.0},
+										 {"+ stability + clustering", true, true, 1.0},
+										 {"clustering + cone-rim, no stability", false, true, 0.8},
+										 {"+ cone-rim rejection (default)", true, true, 0.8}};
+	std::cout << "\n3. TBF sonar corners vs true corners (within 0.2 m); observable = in some cone within 3 m, in sight\n"
+			  << std::left << std::setw(34) << "filters" << std::right << std::setw(9) << "corners" << std::setw(11)
+			  << "precision" << std::setw(12) << "observable" << std::setw(9) << "recall" << "\n";
+	TTbfScore finalScore, support4, support8;
+	for (const auto& v : variants)
+	{
+		TTbfScore total;
+		for (const auto& run : runs)
+		{
+			sonar::CTbfCornerDetector::TOptions o;
+			o.use_stability_filter = v.stability;
+			o.use_clustering = v.clustering;
+			o.cone_fraction = v.coneFraction;
+			const auto tbf = runTbf(run, o);
+			std::vector<TPoint2D> all;
+			for (const auto& c : run.scene.corners) all.push_back(c.point);
+			const auto observable = observableCorners(run, ring);
+			total.add(scoreCorners(tbf.corners(), observable, all));
+			if (&v == &variants.back())
+			{
+				support4.add(scoreCorners(tbf.corners(4), observable, all));
+				support8.add(scoreCorners(tbf.corners(8), observable, all));
+				maps::CTiledOccupancyGrid probe;
+				saveTbfImage(run, probe.geometry(), groundTruth(run, probe.geometry()), tbf,
+							 outDir + "/" + run.name + "_tbf_corners.png");
+			}
+		}
+		std::cout << std::left << std::setw(34) << v.name << std::right << std::setw(9) << total.output << std::fixed
+				  << std::setprecision(3) << std::setw(11) << total.precision() << std::setw(12) << total.observable
+				  << std::setw(9) << total.recall() << "\n";
+		finalScore = total;
+	}
+	for (const auto& [name, score] : {std::pair<std::string, TTbfScore>{"default, support >= 4", support4},
+									  std::pair<std::string, TTbfScore>{"default, support >= 8", support8}})
+		std::cout << std::left << std::setw(34) << name << std::right << std::setw(9) << score.output << std::fixed
+				  << std::setprecision(3) << std::setw(11) << score.precision() << std::setw(12) << score.observable
+				  << std::setw(9) << score.recall() << "\n";
+
+	std::cout << "\nimages: " << outDir << "/{office,corridor}_{sonar_fast,sonar_standard,laser,fused,tbf_corners}.png\n";
+	std::cout << std::defaultfloat << std::setprecision(6) << "\nlaser_tiled_vs_mrpt_insert_speedup=" << sumMrptUs / sumOursUs
+			  << "\nlaser_tiled_truth_agreement=" << oursAll.agreement()
+			  << "\nlaser_mrpt_truth_agreement=" << mrptAll.agreement() << "\nsparse_run_tiled_bytes=" << oursBytes
+			  << "\nsparse_run_mrpt_bytes=" << mrptBytes
+			  << "\nsonar_fast_ms_per_update=" << 1e3 * fastTime / (runs[0].sonars.size() + runs[1].sonars.size())
+			  << "\nsonar_standard_ms_per_update="
+			  << 1e3 * standardTime / (runs[0].sonars.size() + runs[1].sonars.size())
+			  << "\nsonar_standard_whole_tile_ms_per_update="
+			  << 1e3 * wholeTileTime / (runs[0].sonars.size() + runs[1].sonars.size())
+			  << "\nsonar_fast_vs_whole_tile_standard_speedup=" << wholeTileTime / fastTime
+			  << "\nsonar_fast_vs_standard_speedup=" << standardTime / fastTime
+			  << "\nsonar_fast_cell_agreement=" << static_cast<double>(fastCorrect) / fastKnown
+			  << "\nsonar_standard_cell_agreement=" << static_cast<double>(stdCorrect) / stdKnown
+			  << "\ntbf_precision=" << finalScore.precision() << "\ntbf_recall=" << finalScore.recall() << "\n";
+	return 0;
+}
+
+}  // namespace hslam::bench
