@@ -41,4 +41,8 @@ inline const char* kMrptSampleRawlog = "/usr/share/mrpt/datasets/2006-01ENE-21-S
 
 int runGridSuite(const std::vector<std::string>& rawlogs, int repetitions);
 
+/** Leg detection / tracking / exclusion on a folder laid out like
+ * ../shared/datasets/legs (bench_legs.cpp); images go to outDir. */
+int runLegsSuite(const std::string& dataDir, const std::string& outDir);
+
 }  // namespace hslam::bench

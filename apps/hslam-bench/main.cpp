@@ -3,6 +3,7 @@
  * table and then key=value lines for scripts.
  *
  *   hslam-bench grid [--rawlog FILE ...] [--repetitions N]
+ *   hslam-bench legs --data DIR [--out DIR]
  */
 #include "bench_common.h"
 
@@ -12,20 +13,25 @@
 
 int main(int argc, char** argv)
 {
-	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid)", ' ', "0.1");
-	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid", true, "", "suite", cmd);
+	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, legs)", ' ', "0.1");
+	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid, legs", true, "", "suite", cmd);
 	TCLAP::MultiArg<std::string> rawlogs("r", "rawlog",
 										 "rawlog(s) with laser scans and odometry (default: MRPT's sample rawlog)",
 										 false, "file", cmd);
 	TCLAP::ValueArg<int> repetitions("n", "repetitions", "timed runs per measurement, best kept (default 5)", false,
 									 5, "N", cmd);
+	TCLAP::ValueArg<std::string> data("", "data", "legs: folder laid out like ../shared/datasets/legs", false,
+									  "../shared/datasets/legs", "dir", cmd);
+	TCLAP::ValueArg<std::string> out("", "out", "folder for images written by a suite (default .)", false, ".",
+									 "dir", cmd);
 	try
 	{
 		if (!cmd.parse(argc, argv)) return 0;  // --help or --version was printed
 		std::vector<std::string> inputs = rawlogs.getValue();
 		if (inputs.empty()) inputs.push_back(hslam::bench::kMrptSampleRawlog);
 		if (suite.getValue() == "grid") return hslam::bench::runGridSuite(inputs, std::max(1, repetitions.getValue()));
-		std::cerr << "hslam-bench: unknown suite '" << suite.getValue() << "' (available: grid)\n";
+		if (suite.getValue() == "legs") return hslam::bench::runLegsSuite(data.getValue(), out.getValue());
+		std::cerr << "hslam-bench: unknown suite '" << suite.getValue() << "' (available: grid, legs)\n";
 		return 1;
 	}
 	catch (const TCLAP::ArgException& e)
