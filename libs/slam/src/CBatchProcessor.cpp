@@ -31,6 +31,8 @@ TBatchResult CBatchProcessor::run()
 	CMappingPipeline pipeline(cfg);
 	TOutputOptions outputOptions;
 	common::loadOptions(outputOptions, cfg, "output");
+	if (outputOptions.dynamic_debug_images)
+		pipeline.keepDynamicDebugFrames(static_cast<size_t>(outputOptions.dynamic_debug_max_images));
 	std::filesystem::create_directories(m_request.output_dir);
 
 	TBatchResult result;

@@ -21,15 +21,30 @@ common::TTimedPose2D timedPose(const mrpt::obs::CObservation& obs, const mrpt::p
 }
 }  // namespace
 
-std::vector<std::string> CMappingPipeline::sections() { return {"process", "grid", "laser_model", "pose_estimation"}; }
+std::vector<std::string> CMappingPipeline::sections()
+{
+	return {"process", "grid", "laser_model", "pose_estimation", "dynamic_objects"};
+}
 
 CMappingPipeline::CMappingPipeline(const mrpt::config::CConfigFileBase& cfg)
 	: m_processOptions(loaded<TProcessOptions>(cfg, "process")),
 	  m_poseOptions(loaded<TPoseEstimationOptions>(cfg, "pose_estimation")),
 	  m_grid(loaded<maps::CTiledOccupancyGrid::TOptions>(cfg, "grid")),
 	  m_laserInserter(loaded<maps::CLaserGridInserter::TOptions>(cfg, "laser_model")),
+	  m_dynamicOptions(loaded<dynamic::CDynamicObjectFilter::TOptions>(cfg, "dynamic_objects")),
 	  m_estimator(createPoseEstimator(m_poseOptions, cfg))
 {
+	if (m_dynamicOptions.enabled)
+	{
+		try
+		{
+			m_dynamicFilter = std::make_unique<dynamic::CDynamicObjectFilter>(m_dynamicOptions);
+		}
+		catch (const std::invalid_argument& e)
+		{
+			throw common::config_error(std::string("[dynamic_objects] ") + e.what());
+		}
+	}
 }
 
 void CMappingPipeline::saveOptions(mrpt::config::CConfigFileBase& out) const
@@ -38,6 +53,7 @@ void CMappingPipeline::saveOptions(mrpt::config::CConfigFileBase& out) const
 	common::saveOptions(m_grid.options(), out, "grid");
 	common::saveOptions(m_laserInserter.options(), out, "laser_model");
 	common::saveOptions(m_poseOptions, out, "pose_estimation");
+	common::saveOptions(m_dynamicOptions, out, "dynamic_objects");
 }
 
 void CMappingPipeline::processEntry(const io::TRawlogEntry& entry)
@@ -96,13 +112,26 @@ void CMappingPipeline::processScan(const mrpt::obs::CObservation2DRangeScan& sca
 		common::CStageTimer::CScope t(m_timer, "pose_estimation");
 		pose = m_estimator->update(increment, scan);
 	}
+	const std::vector<bool>* excluded = filterDynamicObjects(scan, pose);
 	{
 		common::CStageTimer::CScope t(m_timer, "grid_update");
-		m_laserInserter.insert(m_grid, pose, scan);
+		m_laserInserter.insert(m_grid, pose, scan, excluded);
 	}
 	m_trajectory.push_back(timedPose(scan, pose));
 	m_odometryTrajectory.push_back(timedPose(scan, m_deadReckoningPose));
 	for (const auto& observer : m_scanObservers) observer(scan, pose);
+}
+
+const std::vector<bool>* CMappingPipeline::filterDynamicObjects(const mrpt::obs::CObservation2DRangeScan& scan,
+																const mrpt::poses::CPose2D& pose)
+{
+	if (!m_dynamicFilter) return nullptr;
+	common::CStageTimer::CScope t(m_timer, "dynamic_objects");
+	const auto& frame = m_dynamicFilter->process(scan, pose, mrpt::Clock::toDouble(scan.timestamp));
+	const size_t scanIndex = m_counters.laser_scans - 1;
+	dynamic::appendTrackRows(frame, scanIndex, m_trackRows);
+	if (m_debugFrames.size() < m_debugFramesMax && !frame.legs.empty()) m_debugFrames.push_back({scanIndex, scan, frame});
+	return &frame.beam_is_dynamic;
 }
 
 }  // namespace hslam::slam

@@ -5,6 +5,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 
 namespace hslam::slam
@@ -63,6 +65,24 @@ void writeTiming(const common::CStageTimer& timer, const std::string& dir, std::
 	written.push_back(dir + "/timing.csv");
 	written.push_back(dir + "/timing.txt");
 }
+void writeDynamicObjects(const CMappingPipeline& pipeline, const std::string& dir, std::vector<std::string>& written)
+{
+	if (!pipeline.dynamicFilter()) return;
+	const std::string path = dir + "/tracks.csv";
+	std::ofstream csv(path);
+	dynamic::writeTracksCsv(csv, pipeline.trackRows());
+	if (!csv) throw std::runtime_error(path + ": cannot write");
+	written.push_back(path);
+	if (pipeline.dynamicDebugFrames().empty()) return;
+	std::filesystem::create_directories(dir + "/dynamic");
+	for (const auto& f : pipeline.dynamicDebugFrames())
+	{
+		std::ostringstream name;
+		name << dir << "/dynamic/scan_" << std::setw(6) << std::setfill('0') << f.scan_index << ".png";
+		savePng(dynamic::renderDynamicFrame(f.scan, f.frame), name.str());
+		written.push_back(name.str());
+	}
+}
 }  // namespace
 
 void saveGridmapGz(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& path)
@@ -92,6 +112,7 @@ std::vector<std::string> writeMappingOutputs(const CMappingPipeline& pipeline, c
 	written.push_back(dir + "/trajectory.tum");
 	written.push_back(dir + "/odometry.tum");
 	writeTiming(pipeline.timer(), dir, written);
+	writeDynamicObjects(pipeline, dir, written);
 	return written;
 }
 

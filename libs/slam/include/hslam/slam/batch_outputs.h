@@ -4,7 +4,9 @@
  *   map.gridmap.gz      merged mrpt::maps::COccupancyGridMap2D (MRPT tools load it)
  *   trajectory.tum      estimated pose per scan (TUM format)
  *   odometry.tum        dead-reckoning pose per scan (TUM format)
- *   timing.csv / .txt   per-stage time per scan: mean, p95, max */
+ *   timing.csv / .txt   per-stage time per scan: mean, p95, max
+ *   tracks.csv          leg and person tracks per scan (dynamic object filter on)
+ *   dynamic/scan_N.png  per-scan debug images of the filter (dynamic_debug_images) */
 #pragma once
 
 #include <hslam/slam/CMappingPipeline.h>
@@ -21,6 +23,8 @@ struct TOutputOptions
 	bool write_tiles = true;  //!< write tiles/tile_X_Y.png
 	int tile_pixels_per_cell = 1;  //!< scale of the tile images
 	bool draw_odometry = true;  //!< also draw the dead-reckoning path on map.png
+	bool dynamic_debug_images = false;  //!< write dynamic/scan_N.png (thesis figures 156-165)
+	int dynamic_debug_max_images = 200;  //!< first scans with legs that get an image
 
 	template <class V>
 	void visit(V& v)
@@ -30,6 +34,8 @@ struct TOutputOptions
 		v.flag("write_tiles", write_tiles);
 		v.integer("tile_pixels_per_cell", tile_pixels_per_cell, 1, 16);
 		v.flag("draw_odometry", draw_odometry);
+		v.flag("dynamic_debug_images", dynamic_debug_images);
+		v.integer("dynamic_debug_max_images", dynamic_debug_max_images, 1, 1000000);
 	}
 };
 
