@@ -13,6 +13,7 @@
 
 #include <hslam/common/options_io.h>
 #include <hslam/dynamic/CDynamicObjectFilter.h>
+#include <hslam/dynamic/dynamic_profiles.h>
 #include <hslam/dynamic/occupied_cells.h>
 #include <hslam/io/CRawlogReader.h>
 #include <hslam/maps/CLaserGridInserter.h>
@@ -39,25 +40,6 @@ namespace
 using mrpt::obs::CObservation2DRangeScan;
 namespace fs = std::filesystem;
 
-/** Settings of the detector for these Hokuyo scans (0.35 deg, people up to
- * 5 m). Only what the sensor and the scoring region dictate differs from
- * the thesis defaults (see docs/dynamic.md for the reasoning):
- *  - max_range_m = 5: the annotated arc reaches 5 m (the thesis' 3.2 m is
- *    its map range for a SICK at 1 deg); find_interv keeps the thesis bands
- *    and gets one more (2.2-3.2 m), the last band then ends at 5 m;
- *  - leg_width_m = 0.12: the visible chord of a leg (thesis 4.7.1 cites
- *    9-18 cm widths [20]); the thesis' 0.18 m reproduces its own table but
- *    asks 0.35 deg scans for more beams than a leg gives;
- *  - min_dip_edges = 2: a leg stands in front of what is beside it on both
- *    sides; one side (thesis) accepts wall pieces cut at 300 mm. */
-const char* kHokuyoProfile = R"([dynamic_objects]
-max_range_m = 5.0
-find_interv_bands_m = 1.0 1.2 1.5 2.2 3.2
-leg_width_m = 0.10
-min_width_m = 0.05
-max_width_m = 0.25
-require_isolated = true
-)";
 
 struct TScored
 {
@@ -360,13 +342,13 @@ std::vector<fs::path> positiveFiles(const std::string& dataDir)
 
 int runLegsSuite(const std::string& dataDir, const std::string& outDir)
 {
-	std::string prof = kHokuyoProfile;
+	std::string prof = dynamic::kHokuyoLegsProfileIni;
 	if (getenv("LEGS_SET")) prof += std::string(getenv("LEGS_SET"));  // TEMP exploration
 	mrpt::config::CConfigFileMemory cfg(prof);
 	dynamic::CDynamicObjectFilter::TOptions options;
 	common::loadOptions(options, cfg, "dynamic_objects");
 	const dynamic::CLegDetector detector(options.detector);
-	std::cout << "Profile for 0.35 deg Hokuyo scans (thesis defaults otherwise):\n" << kHokuyoProfile << "\n";
+	std::cout << "Profile for 0.35 deg Hokuyo scans (thesis defaults otherwise):\n" << dynamic::kHokuyoLegsProfileIni << "\n";
 	const double matchRadius_m = 0.20;
 	double filter_s = 0;
 	size_t filterScans = 0;

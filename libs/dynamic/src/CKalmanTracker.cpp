@@ -119,7 +119,8 @@ std::vector<int> CKalmanTracker::update(const std::vector<mrpt::math::TPoint2D>&
 										const mrpt::poses::CPose2D& sensorPose, double t_s,
 										const std::vector<bool>* motionEvidence)
 {
-	const auto evidence = [&](size_t oi) { return motionEvidence && (*motionEvidence)[oi]; };
+	// Without evidence from the caller the requirement is waived (thesis rule).
+	const auto evidence = [&](size_t oi) { return !motionEvidence || (*motionEvidence)[oi]; };
 	for (auto& t : m_tracks) predict(t, t_s);
 
 	// Greedy one-to-one association, nearest (predicted, observed) pairs first.
