@@ -45,4 +45,12 @@ int runGridSuite(const std::vector<std::string>& rawlogs, int repetitions);
  * ../shared/datasets/legs (bench_legs.cpp); images go to outDir. */
 int runLegsSuite(const std::string& dataDir, const std::string& outDir);
 
+/** Every 2D scan of a rawlog (either format), in file order. */
+std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> readScans(const std::string& rawlogPath);
+
+/** The dynamic object filter on simulated samples with walking people and
+ * per-beam ground truth (bench_legs_sim.cpp): every folder under dataDir
+ * holding sim.rawlog, ground_truth.tum, people.csv.gz, beam_labels.csv.gz. */
+int runLegsSimSuite(const std::string& dataDir, const std::string& outDir);
+
 }  // namespace hslam::bench

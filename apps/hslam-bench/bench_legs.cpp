@@ -35,6 +35,21 @@
 
 namespace hslam::bench
 {
+std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> readScans(const std::string& path)
+{
+	io::CRawlogReader reader(path);
+	io::TRawlogEntry entry;
+	std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> scans;
+	while (reader.next(entry))
+	{
+		if (auto s = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(entry.observation)) scans.push_back(s);
+		if (entry.frame)
+			for (const auto& o : *entry.frame)
+				if (auto s2 = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(o)) scans.push_back(s2);
+	}
+	return scans;
+}
+
 namespace
 {
 using mrpt::obs::CObservation2DRangeScan;
@@ -46,21 +61,6 @@ struct TScored
 	size_t scans = 0, annotated = 0, matched = 0, arc_unmatched = 0, outside_arc = 0;
 	size_t annotated_in_range = 0, matched_in_range = 0;
 };
-
-std::vector<CObservation2DRangeScan::Ptr> readScans(const std::string& path)
-{
-	io::CRawlogReader reader(path);
-	io::TRawlogEntry entry;
-	std::vector<CObservation2DRangeScan::Ptr> scans;
-	while (reader.next(entry))
-	{
-		if (auto s = std::dynamic_pointer_cast<CObservation2DRangeScan>(entry.observation)) scans.push_back(s);
-		if (entry.frame)
-			for (const auto& o : *entry.frame)
-				if (auto s2 = std::dynamic_pointer_cast<CObservation2DRangeScan>(o)) scans.push_back(s2);
-	}
-	return scans;
-}
 
 /** One CSV line split at commas outside double quotes. */
 std::vector<std::string> splitCsv(const std::string& line)

@@ -4,6 +4,7 @@
  *
  *   hslam-bench grid [--rawlog FILE ...] [--repetitions N]
  *   hslam-bench legs --data DIR [--out DIR]
+ *   hslam-bench legs-sim [--data rawlog_samples] [--out DIR]
  */
 #include "bench_common.h"
 
@@ -13,14 +14,14 @@
 
 int main(int argc, char** argv)
 {
-	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, legs)", ' ', "0.1");
-	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid, legs", true, "", "suite", cmd);
+	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, legs, legs-sim)", ' ', "0.1");
+	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid, legs, legs-sim", true, "", "suite", cmd);
 	TCLAP::MultiArg<std::string> rawlogs("r", "rawlog",
 										 "rawlog(s) with laser scans and odometry (default: MRPT's sample rawlog)",
 										 false, "file", cmd);
 	TCLAP::ValueArg<int> repetitions("n", "repetitions", "timed runs per measurement, best kept (default 5)", false,
 									 5, "N", cmd);
-	TCLAP::ValueArg<std::string> data("", "data", "legs: folder laid out like ../shared/datasets/legs", false,
+	TCLAP::ValueArg<std::string> data("", "data", "legs: folder laid out like ../shared/datasets/legs; legs-sim: folder of simulated samples", false,
 									  "../shared/datasets/legs", "dir", cmd);
 	TCLAP::ValueArg<std::string> out("", "out", "folder for images written by a suite (default .)", false, ".",
 									 "dir", cmd);
@@ -31,7 +32,9 @@ int main(int argc, char** argv)
 		if (inputs.empty()) inputs.push_back(hslam::bench::kMrptSampleRawlog);
 		if (suite.getValue() == "grid") return hslam::bench::runGridSuite(inputs, std::max(1, repetitions.getValue()));
 		if (suite.getValue() == "legs") return hslam::bench::runLegsSuite(data.getValue(), out.getValue());
-		std::cerr << "hslam-bench: unknown suite '" << suite.getValue() << "' (available: grid, legs)\n";
+		if (suite.getValue() == "legs-sim")
+			return hslam::bench::runLegsSimSuite(data.isSet() ? data.getValue() : "rawlog_samples", out.getValue());
+		std::cerr << "hslam-bench: unknown suite '" << suite.getValue() << "' (available: grid, legs, legs-sim)\n";
 		return 1;
 	}
 	catch (const TCLAP::ArgException& e)
