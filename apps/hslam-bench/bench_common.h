@@ -1,6 +1,7 @@
 /* hslam-bench: helpers shared by the benchmark suites. */
 #pragma once
 
+#include <hslam/dynamic/CDynamicObjectFilter.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
 
@@ -43,7 +44,11 @@ int runGridSuite(const std::vector<std::string>& rawlogs, int repetitions);
 
 /** Leg detection / tracking / exclusion on a folder laid out like
  * ../shared/datasets/legs (bench_legs.cpp); images go to outDir. */
-int runLegsSuite(const std::string& dataDir, const std::string& outDir);
+int runLegsSuite(const std::string& dataDir, const std::string& outDir, const std::string& configFile);
+
+/** Filter options: the INI text `profileIni`, then the [dynamic_objects]
+ * section of `configFile` (if not empty) on top, both range-checked. */
+dynamic::CDynamicObjectFilter::TOptions loadDynamicOptions(const std::string& profileIni, const std::string& configFile);
 
 /** Every 2D scan of a rawlog (either format), in file order. */
 std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> readScans(const std::string& rawlogPath);
@@ -51,6 +56,6 @@ std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> readScans(const std::string
 /** The dynamic object filter on simulated samples with walking people and
  * per-beam ground truth (bench_legs_sim.cpp): every folder under dataDir
  * holding sim.rawlog, ground_truth.tum, people.csv.gz, beam_labels.csv.gz. */
-int runLegsSimSuite(const std::string& dataDir, const std::string& outDir);
+int runLegsSimSuite(const std::string& dataDir, const std::string& outDir, const std::string& configFile);
 
 }  // namespace hslam::bench

@@ -18,6 +18,7 @@
 #include <hslam/io/CRawlogReader.h>
 #include <hslam/maps/CLaserGridInserter.h>
 #include <hslam/maps/grid_rendering.h>
+#include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/slam/CICP.h>
@@ -283,6 +284,7 @@ TTrailResult trailOnStaticLog(const dynamic::CDynamicObjectFilter::TOptions& opt
 		r.filter_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 		inserter.insert(without, origin, *s);
 		inserter.insert(with, origin, *s, &frame.beam_is_dynamic);
+		dynamic::undoOccupiedHits(with, frame.retro_clear_world, inserter.options().occupied_probability);
 		r.masked_beams += frame.dynamicBeams();
 		++r.scans;
 	}
@@ -340,13 +342,24 @@ std::vector<fs::path> positiveFiles(const std::string& dataDir)
 }
 }  // namespace
 
-int runLegsSuite(const std::string& dataDir, const std::string& outDir)
+dynamic::CDynamicObjectFilter::TOptions loadDynamicOptions(const std::string& profileIni, const std::string& configFile)
 {
-	std::string prof = dynamic::kHokuyoLegsProfileIni;
-	if (getenv("LEGS_SET")) prof += std::string(getenv("LEGS_SET"));  // TEMP exploration
-	mrpt::config::CConfigFileMemory cfg(prof);
 	dynamic::CDynamicObjectFilter::TOptions options;
-	common::loadOptions(options, cfg, "dynamic_objects");
+	mrpt::config::CConfigFileMemory profile(profileIni);
+	common::loadOptions(options, profile, "dynamic_objects");
+	if (!configFile.empty())
+	{
+		if (!fs::exists(configFile)) throw std::runtime_error(configFile + ": no such file");
+		mrpt::config::CConfigFile cfg(configFile);
+		common::loadOptions(options, cfg, "dynamic_objects");
+	}
+	return options;
+}
+
+int runLegsSuite(const std::string& dataDir, const std::string& outDir, const std::string& configFile)
+{
+	const auto options = loadDynamicOptions(dynamic::kHokuyoLegsProfileIni, configFile);
+	if (!configFile.empty()) std::cout << "Options of " << configFile << " [dynamic_objects] applied on top of:\n";
 	const dynamic::CLegDetector detector(options.detector);
 	std::cout << "Profile for 0.35 deg Hokuyo scans (thesis defaults otherwise):\n" << dynamic::kHokuyoLegsProfileIni << "\n";
 	const double matchRadius_m = 0.20;

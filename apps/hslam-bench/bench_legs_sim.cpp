@@ -14,6 +14,7 @@
  * numbers measure the filter, not odometry drift. */
 #include "bench_common.h"
 
+#include <hslam/common/options_io.h>
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/dynamic/CDynamicObjectFilter.h>
 #include <hslam/dynamic/occupied_cells.h>
@@ -85,7 +86,8 @@ struct TSimResult
 	double filter_s = 0;
 };
 
-TSimResult runSample(const fs::path& dir, const std::string& pngPath)
+TSimResult runSample(const fs::path& dir, const dynamic::CDynamicObjectFilter::TOptions& options,
+					 const std::string& pngPath)
 {
 	const std::string rawlog = (dir / "sim.rawlog").string();
 	std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> scans;
@@ -120,7 +122,7 @@ TSimResult runSample(const fs::path& dir, const std::string& pngPath)
 
 	TSimResult r;
 	r.people = personIds.size();
-	dynamic::CDynamicObjectFilter filter;  // thesis defaults (the simulated LMS200 is 1 deg)
+	dynamic::CDynamicObjectFilter filter(options);
 	maps::CLaserGridInserter inserter;
 	maps::CTiledOccupancyGrid without, with;
 	std::set<std::pair<int, int>> personCells, staticCells;
@@ -135,6 +137,7 @@ TSimResult runSample(const fs::path& dir, const std::string& pngPath)
 		++r.scans;
 		inserter.insert(without, pose, scan);
 		inserter.insert(with, pose, scan, &frame.beam_is_dynamic);
+		dynamic::undoOccupiedHits(with, frame.retro_clear_world, inserter.options().occupied_probability);
 
 		const mrpt::poses::CPose2D sensor = pose + mrpt::poses::CPose2D(scan.sensorPose);
 		for (size_t b = 0; b < scan.getScanSize(); ++b)
@@ -206,8 +209,10 @@ TSimResult runSample(const fs::path& dir, const std::string& pngPath)
 double ratio(size_t a, size_t b) { return static_cast<double>(a) / static_cast<double>(std::max<size_t>(1, b)); }
 }  // namespace
 
-int runLegsSimSuite(const std::string& dataDir, const std::string& outDir)
+int runLegsSimSuite(const std::string& dataDir, const std::string& outDir, const std::string& configFile)
 {
+	// Thesis defaults (the simulated LMS200 has the thesis' 1 deg), or [dynamic_objects] of configFile.
+	const auto options = loadDynamicOptions("", configFile);
 	std::vector<fs::path> samples;
 	for (const auto& e : fs::directory_iterator(dataDir))
 		if (fs::exists(e.path() / "sim.rawlog") && fs::exists(e.path() / "beam_labels.csv.gz") &&
@@ -218,12 +223,12 @@ int runLegsSimSuite(const std::string& dataDir, const std::string& outDir)
 	fs::create_directories(outDir);
 
 	TSimResult total;
-	std::cout << "Simulated samples (thesis defaults, ground-truth poses)\n"
+	std::cout << "Simulated samples (ground-truth poses; options: " << (configFile.empty() ? "thesis defaults" : configFile) << ")\n"
 			  << "  sample     scans people  beam precision  recall  coverage  id switches  people cells without/with\n";
 	for (const auto& dir : samples)
 	{
 		const std::string name = dir.filename().string();
-		const auto r = runSample(dir, outDir + "/legs_sim_" + name + "_maps.png");
+		const auto r = runSample(dir, options, outDir + "/legs_sim_" + name + "_maps.png");
 		std::cout << "  " << std::left << std::setw(10) << name << std::right << std::setw(6) << r.scans
 				  << std::setw(7) << r.people << std::fixed << std::setprecision(3) << std::setw(16)
 				  << ratio(r.tp, r.tp + r.fp) << std::setw(8) << ratio(r.tp, r.tp + r.fn) << std::setw(10)

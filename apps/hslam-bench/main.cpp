@@ -3,8 +3,8 @@
  * table and then key=value lines for scripts.
  *
  *   hslam-bench grid [--rawlog FILE ...] [--repetitions N]
- *   hslam-bench legs --data DIR [--out DIR]
- *   hslam-bench legs-sim [--data rawlog_samples] [--out DIR]
+ *   hslam-bench legs --data DIR [--out DIR] [--config FILE]
+ *   hslam-bench legs-sim [--data rawlog_samples] [--out DIR] [--config FILE]
  */
 #include "bench_common.h"
 
@@ -25,15 +25,18 @@ int main(int argc, char** argv)
 									  "../shared/datasets/legs", "dir", cmd);
 	TCLAP::ValueArg<std::string> out("", "out", "folder for images written by a suite (default .)", false, ".",
 									 "dir", cmd);
+	TCLAP::ValueArg<std::string> config("c", "config", "legs suites: INI whose [dynamic_objects] overrides the suite's options",
+										false, "", "file", cmd);
 	try
 	{
 		if (!cmd.parse(argc, argv)) return 0;  // --help or --version was printed
 		std::vector<std::string> inputs = rawlogs.getValue();
 		if (inputs.empty()) inputs.push_back(hslam::bench::kMrptSampleRawlog);
 		if (suite.getValue() == "grid") return hslam::bench::runGridSuite(inputs, std::max(1, repetitions.getValue()));
-		if (suite.getValue() == "legs") return hslam::bench::runLegsSuite(data.getValue(), out.getValue());
+		if (suite.getValue() == "legs") return hslam::bench::runLegsSuite(data.getValue(), out.getValue(), config.getValue());
 		if (suite.getValue() == "legs-sim")
-			return hslam::bench::runLegsSimSuite(data.isSet() ? data.getValue() : "rawlog_samples", out.getValue());
+			return hslam::bench::runLegsSimSuite(data.isSet() ? data.getValue() : "rawlog_samples", out.getValue(),
+												 config.getValue());
 		std::cerr << "hslam-bench: unknown suite '" << suite.getValue() << "' (available: grid, legs, legs-sim)\n";
 		return 1;
 	}

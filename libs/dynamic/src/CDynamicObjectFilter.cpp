@@ -51,6 +51,8 @@ bool CDynamicObjectFilter::seenFreeBefore(const mrpt::math::TPoint2D& leg, const
 void CDynamicObjectFilter::pairLegs(const std::vector<mrpt::math::TPoint2D>& legs,
 									std::vector<mrpt::math::TPoint2D>& persons, std::vector<int>& personOfLeg) const
 {
+	personOfLeg.assign(legs.size(), -1);
+	persons.clear();
 	std::vector<std::tuple<double, size_t, size_t>> pairs;
 	for (size_t a = 0; a < legs.size(); ++a)
 		for (size_t b = a + 1; b < legs.size(); ++b)
@@ -59,8 +61,6 @@ void CDynamicObjectFilter::pairLegs(const std::vector<mrpt::math::TPoint2D>& leg
 			if (d <= m_options.pair_max_distance_m) pairs.emplace_back(d, a, b);
 		}
 	std::sort(pairs.begin(), pairs.end());
-	personOfLeg.assign(legs.size(), -1);
-	persons.clear();
 	for (const auto& [d, a, b] : pairs)
 	{
 		if (personOfLeg[a] >= 0 || personOfLeg[b] >= 0) continue;
@@ -117,8 +117,41 @@ const TDynamicFrame& CDynamicObjectFilter::process(const mrpt::obs::CObservation
 	m_frame.leg_tracks = m_legs.tracks();
 	m_frame.person_tracks = m_persons.tracks();
 	buildMask(scan, robotPose);
+	if (m_options.retro_clear_max_points > 0) collectLateExclusions(scan, robotPose);
 	if (useEvidence) m_seenInserter.insert(m_seen, robotPose, scan, &m_frame.beam_is_dynamic);
 	return m_frame;
+}
+
+void CDynamicObjectFilter::collectLateExclusions(const mrpt::obs::CObservation2DRangeScan& scan,
+												 const mrpt::poses::CPose2D& robotPose)
+{
+	const double sx = scan.sensorPose.x(), sy = scan.sensorPose.y();
+	const size_t cap = static_cast<size_t>(m_options.retro_clear_max_points);
+	for (size_t i = 0; i < m_frame.legs.size(); ++i)
+	{
+		const int person = m_frame.person_track[i];
+		if (m_frame.leg_is_dynamic[i])
+		{
+			// Confirmed: release what this person left in the map before.
+			const auto it = m_pendingHits.find(person);
+			if (it == m_pendingHits.end()) continue;
+			m_frame.retro_clear_world.insert(m_frame.retro_clear_world.end(), it->second.begin(), it->second.end());
+			m_pendingHits.erase(it);
+			continue;
+		}
+		auto& pending = m_pendingHits[person];
+		const auto& l = m_frame.legs[i];
+		for (size_t b = l.first_beam; b <= l.last_beam; ++b)
+		{
+			const double r = scan.getScanRange(b), a = beamBearing(scan, b);
+			mrpt::math::TPoint2D w;
+			robotPose.composePoint(sx + r * std::cos(a), sy + r * std::sin(a), w.x, w.y);
+			pending.push_back(w);
+		}
+		if (pending.size() > cap) pending.erase(pending.begin(), pending.end() - static_cast<long>(cap));
+	}
+	for (auto it = m_pendingHits.begin(); it != m_pendingHits.end();)
+		it = m_persons.find(it->first) ? std::next(it) : m_pendingHits.erase(it);
 }
 
 void CDynamicObjectFilter::buildMask(const mrpt::obs::CObservation2DRangeScan& scan,

@@ -1,5 +1,7 @@
 #include <hslam/dynamic/occupied_cells.h>
 
+#include <cmath>
+
 namespace hslam::dynamic
 {
 std::vector<maps::TGlobalCell> occupiedCells(const maps::CTiledOccupancyGrid& grid, double threshold)
@@ -32,6 +34,17 @@ std::vector<maps::TGlobalCell> cellsNotIn(const maps::CTiledOccupancyGrid& grid,
 		if (!near) out.push_back(c);
 	}
 	return out;
+}
+
+void undoOccupiedHits(maps::CTiledOccupancyGrid& grid, const std::vector<mrpt::math::TPoint2D>& points,
+					  double occupiedProbability)
+{
+	const float undo = -static_cast<float>(std::log(occupiedProbability / (1 - occupiedProbability)));
+	for (const auto& p : points)
+	{
+		const auto c = grid.geometry().cellOf(p.x, p.y);
+		if (grid.isObserved(c)) grid.updateCell(c, undo);
+	}
 }
 
 }  // namespace hslam::dynamic

@@ -1,4 +1,5 @@
 #include <hslam/common/options_io.h>
+#include <hslam/dynamic/occupied_cells.h>
 #include <hslam/slam/CMappingPipeline.h>
 #include <mrpt/obs/CObservationComment.h>
 #include <mrpt/system/datetime.h>
@@ -128,6 +129,7 @@ const std::vector<bool>* CMappingPipeline::filterDynamicObjects(const mrpt::obs:
 	if (!m_dynamicFilter) return nullptr;
 	common::CStageTimer::CScope t(m_timer, "dynamic_objects");
 	const auto& frame = m_dynamicFilter->process(scan, pose, mrpt::Clock::toDouble(scan.timestamp));
+	dynamic::undoOccupiedHits(m_grid, frame.retro_clear_world, m_laserInserter.options().occupied_probability);
 	const size_t scanIndex = m_counters.laser_scans - 1;
 	dynamic::appendTrackRows(frame, scanIndex, m_trackRows);
 	if (m_debugFrames.size() < m_debugFramesMax && !frame.legs.empty()) m_debugFrames.push_back({scanIndex, scan, frame});

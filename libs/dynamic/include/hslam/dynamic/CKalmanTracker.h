@@ -129,6 +129,7 @@ class CKalmanTracker
 	/** Live tracks (tentative, dynamic and ghost), after the last update. */
 	const std::vector<TTrack>& tracks() const { return m_tracks; }
 	const TTrack* find(int id) const;
+
 	const TOptions& options() const { return m_options; }
 	/** Number of tracks ever created (ids are 1..this). */
 	int createdTracks() const { return m_nextId - 1; }
