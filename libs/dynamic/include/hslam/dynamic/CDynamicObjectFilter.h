@@ -73,7 +73,7 @@ class CDynamicObjectFilter
 		CLegDetector::TOptions detector;
 		CKalmanTracker::TOptions tracker;  //!< shared by leg and person tracks
 		double pair_max_distance_m = 0.6;  //!< two legs of one person (step length)
-		double mask_radius_m = 0.25;  //!< beams ending this near a dynamic person are masked
+		double mask_radius_m = 0.35;  //!< beams ending this near a dynamic person are masked (half the pairing distance + a leg radius)
 		int mask_margin_beams = 1;  //!< extra beams masked on each side of a dynamic leg
 		double free_space_resolution_m = 0.1;  //!< cell side of the filter's own grid
 		double free_space_max_range_m = 8.0;  //!< beams inserted into it up to this range
