@@ -363,8 +363,8 @@ int runLegsSuite(const std::string& dataDir, const std::string& outDir, const st
 	const dynamic::CLegDetector detector(options.detector);
 	std::cout << "Profile for 0.35 deg Hokuyo scans (thesis defaults otherwise):\n" << dynamic::kHokuyoLegsProfileIni << "\n";
 	const double matchRadius_m = 0.20;
-	double filter_s = 0;
-	size_t filterScans = 0;
+	double filter_s = 0, detect_s = 0;
+	size_t filterScans = 0, detectScans = 0;
 
 	// 1. No people: every leg is false. Single-scan detector, and the filter
 	// (legs flagged dynamic) with the robot motion from scan-to-scan ICP.
@@ -378,6 +378,10 @@ int runLegsSuite(const std::string& dataDir, const std::string& outDir, const st
 		const auto poses = icpPoses(scans);
 		double path_m = 0;
 		for (size_t i = 1; i < poses.size(); ++i) path_m += poses[i].distanceTo(poses[i - 1]);
+		const auto t0 = std::chrono::steady_clock::now();
+		for (const auto& scan : scans) detector.detect(*scan);
+		detect_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+		detectScans += scans.size();
 		TLegsPerScan all, dyn;
 		runFilter(options, scans, poses, all, dyn, &filter_s);
 		filterScans += scans.size();
@@ -448,6 +452,7 @@ int runLegsSuite(const std::string& dataDir, const std::string& outDir, const st
 			  << "\nlegs_dynamic_recall=" << ratio(dynTotal.matched, dynTotal.annotated)
 			  << "\nlegs_dynamic_false_per_scan=" << ratio(negDynamic, negScans)
 			  << "\nghost_cells_without=" << trail.trail_without << "\nghost_cells_with=" << trail.trail_with
+			  << "\ndetect_us_per_scan_768_beams=" << 1e6 * detect_s / std::max<size_t>(1, detectScans)
 			  << "\nfilter_us_per_scan=" << 1e6 * filter_s / std::max<size_t>(1, filterScans)
 			  << "\nlegs_recall=" << ratio(detTotal.matched, detTotal.annotated)
 			  << "\nlegs_false_per_scan=" << ratio(negLegs, negScans) << "\nghost_cells_reduction=" << reduction

@@ -94,7 +94,8 @@ void CBatchProcessor::printSummary(const CMappingPipeline& pipeline, const TBatc
 		  << " KiB)\n\nTiming per call:\n";
 	pipeline.timer().printTable(m_out);
 	m_out << "\nResults written to " << m_request.output_dir << "/ (map.png, tiles/, map.gridmap.gz, "
-		  << "trajectory.tum, odometry.tum, timing.csv, config_used.ini)\n";
+		  << "trajectory.tum, odometry.tum, timing.csv, config_used.ini"
+		  << (pipeline.dynamicFilter() ? ", tracks.csv" : "") << ")\n";
 	if (!result.input_error.empty())
 		m_err << "error: " << result.input_error << "\n"
 			  << "       results for the " << c.entries << " entries read before the fault were written.\n";
