@@ -114,3 +114,23 @@ TEST(LegDetector, OptionsComeFromIniWithChecks)
 	EXPECT_NEAR(o.tracker.gate_bearing_rad, 5 * kDeg, 1e-12);
 	EXPECT_FALSE(o.enabled);
 }
+
+TEST(LegDetector, GarbageRangesAreIgnoredNotCrashed)
+{
+	// NaN, inf, zero and negative ranges flagged valid (a faulty driver) next to a real leg.
+	auto scan = castScan({}, {{1.3, 0.2, 0.09}}, {{4.3, -5, 4.3, 5}});
+	const float bad[] = {std::nanf(""), INFINITY, 0.0f, -1.0f};
+	for (size_t i = 0; i < 40; ++i)
+	{
+		scan.setScanRange(i, bad[i % 4]);
+		scan.setScanRangeValidity(i, true);
+	}
+	const CLegDetector d;
+	const auto legs = d.detect(scan);
+	ASSERT_EQ(legs.size(), 1u);
+	EXPECT_NEAR(legs[0].y_m, 0.2, 0.03);
+	CDynamicObjectFilter filter;
+	const auto& frame = filter.process(scan, {}, 0.0);
+	EXPECT_EQ(frame.beam_is_dynamic.size(), scan.getScanSize());
+	EXPECT_EQ(filter.process(scan, {}, 0.0).legs.size(), 1u);  // same time stamp twice
+}
