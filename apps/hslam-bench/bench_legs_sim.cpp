@@ -7,6 +7,8 @@
  *     true person (people.csv.gz, within 0.5 m) changing id, over the scans
  *     where the person is hit by >= 3 beams within the detector's range
  *     (coverage = share of those scans with a dynamic track on the person);
+ *     also counted: switches after a gap no longer than the tracker's memory
+ *     (those re-identification is meant to avoid);
  *   - map cells wrongly occupied by people, with / without exclusion: grid
  *     cells hit only by person beams (never by a static-structure beam) that
  *     end occupied.
@@ -81,7 +83,7 @@ double number(const std::map<std::string, std::string>& row, const std::string& 
 struct TSimResult
 {
 	size_t scans = 0, tp = 0, fp = 0, fn = 0;
-	size_t people = 0, person_frames = 0, covered_frames = 0, id_switches = 0;
+	size_t people = 0, person_frames = 0, covered_frames = 0, id_switches = 0, id_switches_short = 0;
 	size_t people_cells_without = 0, people_cells_with = 0;
 	double filter_s = 0;
 };
@@ -127,6 +129,7 @@ TSimResult runSample(const fs::path& dir, const dynamic::CDynamicObjectFilter::T
 	maps::CTiledOccupancyGrid without, with;
 	std::set<std::pair<int, int>> personCells, staticCells;
 	std::map<int, int> lastTrackOf;  // true person -> last matched track id
+	std::map<int, double> lastMatch_s;  // true person -> time of that match
 	for (size_t i = 0; i < scans.size(); ++i)
 	{
 		const auto& scan = *scans[i];
@@ -173,8 +176,15 @@ TSimResult runSample(const fs::path& dir, const dynamic::CDynamicObjectFilter::T
 			if (best < 0) continue;
 			++r.covered_frames;
 			const auto last = lastTrackOf.find(id);
-			if (last != lastTrackOf.end() && last->second != best) ++r.id_switches;
+			const double t = mrpt::Clock::toDouble(scan.timestamp);
+			if (last != lastTrackOf.end() && last->second != best)
+			{
+				++r.id_switches;
+				// Within the tracker's memory: a switch re-identification should have avoided.
+				r.id_switches_short += t - lastMatch_s[id] <= filter.options().tracker.memory_s;
+			}
 			lastTrackOf[id] = best;
+			lastMatch_s[id] = t;
 		}
 	}
 	// Cells only people ever hit (not within one cell of a static hit) that end occupied.
@@ -238,6 +248,7 @@ int runLegsSimSuite(const std::string& dataDir, const std::string& outDir, const
 		total.tp += r.tp, total.fp += r.fp, total.fn += r.fn;
 		total.people += r.people, total.person_frames += r.person_frames, total.covered_frames += r.covered_frames;
 		total.id_switches += r.id_switches;
+		total.id_switches_short += r.id_switches_short;
 		total.people_cells_without += r.people_cells_without, total.people_cells_with += r.people_cells_with;
 		total.filter_s += r.filter_s;
 	}
@@ -246,6 +257,7 @@ int runLegsSimSuite(const std::string& dataDir, const std::string& outDir, const
 			  << ratio(total.tp, total.tp + total.fp) << "\nsim_beam_recall=" << ratio(total.tp, total.tp + total.fn)
 			  << "\nsim_person_coverage=" << ratio(total.covered_frames, total.person_frames)
 			  << "\nsim_id_switches_per_person=" << ratio(total.id_switches, total.people)
+			  << "\nsim_id_switches_within_memory_per_person=" << ratio(total.id_switches_short, total.people)
 			  << "\nsim_people_cells_without=" << total.people_cells_without
 			  << "\nsim_people_cells_with=" << total.people_cells_with << "\nsim_people_cells_reduction="
 			  << (total.people_cells_without ? 1.0 - ratio(total.people_cells_with, total.people_cells_without) : 0.0)

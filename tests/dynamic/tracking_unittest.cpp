@@ -52,6 +52,25 @@ TEST(KalmanTracker, LifeCycleConfirmMissDropReidentify)
 	EXPECT_EQ(tracker.createdTracks(), 2);
 }
 
+TEST(KalmanTracker, TrackBornOutOfGateTakesOverTheDroppedIdentity)
+{
+	// A person confirmed walking along x; the observation then jumps 0.6 m
+	// sideways (13 deg at 2.5 m, outside the 10 deg gate): a new tentative
+	// track is born, and when the old one is dropped it takes over its id.
+	CKalmanTracker tracker;
+	const CPose2D sensor;
+	double t = 0;
+	int id = -1;
+	for (int k = 0; k < 5; ++k, t += 0.1) id = tracker.update({TPoint2D(2.0 + t, 0.0)}, sensor, t)[0];
+	ASSERT_EQ(tracker.find(id)->state, ETrackState::dynamic);
+	std::vector<int> owner;
+	for (int k = 0; k < 3; ++k, t += 0.1) owner = tracker.update({TPoint2D(2.0 + t, 0.6)}, sensor, t);
+	EXPECT_EQ(owner[0], id);
+	EXPECT_EQ(tracker.tracks().size(), 1u);
+	EXPECT_EQ(tracker.reidentifications(), 1u);
+	EXPECT_EQ(tracker.find(id)->state, ETrackState::dynamic);
+}
+
 TEST(KalmanTracker, StaticObjectBecomesGhostAndNeverDynamic)
 {
 	CKalmanTracker tracker;

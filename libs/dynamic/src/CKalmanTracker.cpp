@@ -115,6 +115,41 @@ void CKalmanTracker::registerHit(TTrack& t, const mrpt::math::TPoint2D& z, bool 
 		t.state = ETrackState::ghost;
 }
 
+void CKalmanTracker::takeOverFromMemory(double t_s, std::vector<int>& owner)
+{
+	// A younger track (not a ghost) near where a remembered one would be now
+	// is the same object
+	// (the observation jumped out of the old track's gate, e.g. a person seen
+	// by one leg, then by both): it takes over the remembered identity.
+	for (auto m = m_memory.begin(); m != m_memory.end();)
+	{
+		const TTrack& old = m->track;
+		const double dt = std::min(t_s - m->t_lost_s, 1.0);
+		TTrack* heir = nullptr;
+		double bestD = m_options.memory_gate_m;
+		for (auto& t : m_tracks)
+		{
+			if (t.state == ETrackState::ghost || t.id < old.id)
+				continue;
+			const double d = std::min(std::hypot(t.x[0] - old.x[0], t.x[1] - old.x[1]),
+									  std::hypot(t.x[0] - old.x[0] - old.x[2] * dt, t.x[1] - old.x[1] - old.x[3] * dt));
+			if (d <= bestD) bestD = d, heir = &t;
+		}
+		if (!heir)
+		{
+			++m;
+			continue;
+		}
+		std::replace(owner.begin(), owner.end(), heir->id, old.id);
+		heir->id = old.id;
+		if (heir->free_hits >= m_options.confirm_free_hits) heir->state = ETrackState::dynamic;
+		heir->birth_m = old.birth_m;
+		heir->travel_m = std::max(heir->travel_m, old.travel_m);
+		++m_reidentified;
+		m = m_memory.erase(m);
+	}
+}
+
 std::vector<int> CKalmanTracker::update(const std::vector<mrpt::math::TPoint2D>& observations,
 										const mrpt::poses::CPose2D& sensorPose, double t_s,
 										const std::vector<bool>* motionEvidence)
@@ -160,6 +195,7 @@ std::vector<int> CKalmanTracker::update(const std::vector<mrpt::math::TPoint2D>&
 		kept.push_back(t);
 	}
 	m_tracks.swap(kept);
+	takeOverFromMemory(t_s, owner);
 	m_memory.erase(std::remove_if(m_memory.begin(), m_memory.end(),
 								  [&](const TMemory& m) { return t_s - m.t_lost_s > m_options.memory_s; }),
 				   m_memory.end());

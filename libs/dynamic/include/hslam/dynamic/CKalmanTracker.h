@@ -33,7 +33,9 @@
  *    lost (or of its constant-velocity extrapolation) takes over its id and
  *    dynamic state (the state only if the observation has motion evidence,
  *    when evidence is given), so a person reappearing after an occlusion
- *    keeps its identity.
+ *    keeps its identity. Likewise a younger track (not a ghost) near where
+ *    a dropped dynamic track would be takes over its id (the observation
+ *    had jumped out of the old track's gate).
  * Velocities are reported in the world frame and, as in the thesis, as
  * radial (m/s) and angular (rad/s) components seen from the sensor. */
 #pragma once
@@ -149,6 +151,7 @@ class CKalmanTracker
 	void updatePolar(TTrack& t, const mrpt::poses::CPose2D& sensorPose) const;
 	TTrack newTrack(const mrpt::math::TPoint2D& z, double t_s);
 	void registerHit(TTrack& t, const mrpt::math::TPoint2D& z, bool evidence) const;
+	void takeOverFromMemory(double t_s, std::vector<int>& owner);
 
 	TOptions m_options;
 	std::vector<TTrack> m_tracks;
