@@ -25,6 +25,8 @@ for name in lab corridor umbmark floor; do
 	# so the bytes are reproducible); hslam::io::CGzLineReader and zcat read them.
 	for f in people beam_labels sonar_truth; do gzip -n -9 -f "$out/$f.csv"; done
 	rm -f "$out/odometry.tum"  # dead reckoning is in the rawlog itself
+	rawlog-edit --info -i "$out/sim.rawlog" 2>/dev/null | grep -q "Observations format               : Yes" ||
+		{ echo "$name: rawlog-edit --info cannot read $out/sim.rawlog" >&2; exit 1; }
 	mkdir -p "results/samples/$name"
 	"$BUILD/bin/hslam-process" -q -c config_ini/hslam-default.ini -i "$out/sim.rawlog" \
 		-o "results/samples/$name" --ground-truth "$out/ground_truth.tum" >"results/samples/$name/process.log"

@@ -89,8 +89,8 @@ CSimulator::CSimulator(const TSimulatorConfig& config, TScene scene)
 		if (segs.empty()) throw hslam::common::config_error("[path] commands: empty in mode = velocity");
 		m_script.emplace(segs);
 	}
-	else if (m_cfg.simulation.duration_s <= 0)
-		throw hslam::common::config_error("[simulation] duration_s: must be > 0 with [path] mode = external");
+	// mode = external: driven by setExternalCommand(); with duration_s = 0 the
+	// caller decides when to stop (done() only at max_duration_s).
 }
 
 std::vector<TPersonState> CSimulator::peopleNow() const

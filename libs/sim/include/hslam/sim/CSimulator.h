@@ -65,7 +65,7 @@ struct TRobotOptions  //!< [robot]
 
 struct TPathOptions  //!< [path]
 {
-	std::string mode = "waypoints";  //!< waypoints | velocity | external
+	std::string mode = "waypoints";  //!< waypoints | velocity | external (setExternalCommand; stops at duration_s or max_duration_s)
 	std::string follow = "truth";  //!< pose the follower steers by: truth | odometry (UMBmark)
 	std::string waypoints;  //!< "x y; x y; ..." (m)
 	int repeat = 1;  //!< the waypoint list is driven this many times
