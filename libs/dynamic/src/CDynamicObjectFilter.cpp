@@ -125,30 +125,47 @@ const TDynamicFrame& CDynamicObjectFilter::process(const mrpt::obs::CObservation
 void CDynamicObjectFilter::collectLateExclusions(const mrpt::obs::CObservation2DRangeScan& scan,
 												 const mrpt::poses::CPose2D& robotPose)
 {
+	// 1. Persons confirmed by now: release what they left in the map before.
+	for (const auto& t : m_frame.person_tracks)
+	{
+		const auto it = m_pendingHits.find(t.id);
+		if (t.state != ETrackState::dynamic || it == m_pendingHits.end()) continue;
+		m_frame.retro_clear_world.insert(m_frame.retro_clear_world.end(), it->second.begin(), it->second.end());
+		m_pendingHits.erase(it);
+	}
+	// 2. Beams inserted as occupied now that would have been masked if their
+	// person were confirmed: its leg segments, and for a tentative person
+	// the beams ending within mask_radius_m of it. Each beam counts once.
+	const size_t n = scan.getScanSize();
+	std::vector<int> personOfBeam(n, -1);
+	for (size_t i = 0; i < m_frame.legs.size(); ++i)
+		if (!m_frame.leg_is_dynamic[i])
+			for (size_t b = m_frame.legs[i].first_beam; b <= m_frame.legs[i].last_beam; ++b)
+				personOfBeam[b] = m_frame.person_track[i];
+	std::vector<std::pair<int, mrpt::math::TPoint2D>> tentative;  // id, robot-frame position
+	for (const auto& t : m_frame.person_tracks)
+		if (t.state == ETrackState::tentative && t.observation >= 0)
+			tentative.push_back({t.id, robotPose.inverseComposePoint(t.position())});
+	const double r2 = m_options.mask_radius_m * m_options.mask_radius_m;
 	const double sx = scan.sensorPose.x(), sy = scan.sensorPose.y();
 	const size_t cap = static_cast<size_t>(m_options.retro_clear_max_points);
-	for (size_t i = 0; i < m_frame.legs.size(); ++i)
+	for (size_t b = 0; b < n; ++b)
 	{
-		const int person = m_frame.person_track[i];
-		if (m_frame.leg_is_dynamic[i])
+		const double r = scan.getScanRange(b);
+		if (m_frame.beam_is_dynamic[b] || !scan.getScanRangeValidity(b) || !std::isfinite(r)) continue;
+		const double a = beamBearing(scan, b);
+		const double x = sx + r * std::cos(a), y = sy + r * std::sin(a);
+		for (size_t k = 0; k < tentative.size() && personOfBeam[b] < 0; ++k)
 		{
-			// Confirmed: release what this person left in the map before.
-			const auto it = m_pendingHits.find(person);
-			if (it == m_pendingHits.end()) continue;
-			m_frame.retro_clear_world.insert(m_frame.retro_clear_world.end(), it->second.begin(), it->second.end());
-			m_pendingHits.erase(it);
-			continue;
+			const auto& p = tentative[k].second;
+			if ((x - p.x) * (x - p.x) + (y - p.y) * (y - p.y) <= r2) personOfBeam[b] = tentative[k].first;
 		}
-		auto& pending = m_pendingHits[person];
-		const auto& l = m_frame.legs[i];
-		for (size_t b = l.first_beam; b <= l.last_beam; ++b)
-		{
-			const double r = scan.getScanRange(b), a = beamBearing(scan, b);
-			mrpt::math::TPoint2D w;
-			robotPose.composePoint(sx + r * std::cos(a), sy + r * std::sin(a), w.x, w.y);
-			pending.push_back(w);
-		}
-		if (pending.size() > cap) pending.erase(pending.begin(), pending.end() - static_cast<long>(cap));
+		if (personOfBeam[b] < 0) continue;
+		auto& pending = m_pendingHits[personOfBeam[b]];
+		mrpt::math::TPoint2D w;
+		robotPose.composePoint(x, y, w.x, w.y);
+		pending.push_back(w);
+		if (pending.size() > cap) pending.erase(pending.begin());
 	}
 	for (auto it = m_pendingHits.begin(); it != m_pendingHits.end();)
 		it = m_persons.find(it->first) ? std::next(it) : m_pendingHits.erase(it);

@@ -29,9 +29,11 @@
  *  - Late exclusion (the issue's "clear previously inserted cells"): a track
  *    needs a few scans to be confirmed, and the beams that hit it meanwhile
  *    were inserted as occupied. The filter keeps the world end points of
- *    those beams per person track (at most retro_clear_max_points) and
- *    hands them over once the track is confirmed (retro_clear_world), so
- *    the map can undo exactly those occupied updates (undoOccupiedHits).
+ *    those beams per person track (its leg segments, and for a tentative
+ *    person the beams ending within mask_radius_m of it: what the mask
+ *    would have covered; at most retro_clear_max_points) and hands them
+ *    over once the track is confirmed (retro_clear_world), so the map can
+ *    undo exactly those occupied updates (undoOccupiedHits).
  * No file I/O: see dynamic_outputs.h for the CSV rows and debug images. */
 #pragma once
 
