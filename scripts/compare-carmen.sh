@@ -91,12 +91,15 @@ datasets="$(cd "$datasets" && pwd)"
 mkdir -p "$out"
 out="$(cd "$out" && pwd)"  # MRPT configs need absolute paths
 
-# Run copies of the hslam apps, so that a rebuild during the run (it takes
-# minutes) cannot mix two versions in one table; note what was measured.
+# Run copies of the hslam apps and of the INI, so that a rebuild or an edit
+# during the run (it takes minutes) cannot mix two versions in one table; note
+# what was measured.
 mkdir -p "$out/bin"
 for b in hslam-carmen2rawlog hslam-process hslam-evaluate; do
 	cp "$bin/$b" "$out/bin/$b"
 done
+cp "$config" "$out/hslam-config.ini"
+config="$out/hslam-config.ini"
 {
 	echo "date: $(date -u +%Y-%m-%dT%H:%M:%SZ)"
 	echo "hslam: $(git -C "$repo" describe --always --dirty 2>/dev/null || echo unknown) (binaries copied from $bin)"
@@ -104,6 +107,19 @@ done
 	echo "host: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg) at start"
 } >"$out/version.txt"
 bin="$out/bin"
+
+# Preflight: hslam-process checks the INI (and --set) before opening its input,
+# so a missing input tells whether the apps and the INI agree; on disagreement
+# the runs below fail and are recorded as such in the table.
+for m in "${hslam_methods[@]}"; do
+	msg=$("$bin/hslam-process" -c "$config" --set "pose_estimation.method=$m" -q \
+		-i "$out/.preflight-missing.rawlog" -o "$out/.preflight" 2>&1 || true)
+	case "$msg" in
+	*"rawlog file not found"*) ;;
+	*) echo "compare-carmen: warning: hslam-process (method=$m) rejects $config: $msg" >&2 ;;
+	esac
+done
+rm -rf "$out/.preflight"
 
 # ---------------------------------------------------------------- python helpers
 # Small stdlib-only tools: rawlog format conversion, path -> TUM, the table.

@@ -3,6 +3,7 @@
 
 #include <hslam/maps/CLaserGridInserter.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
+#include <hslam/dynamic/CDynamicObjectFilter.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
 
@@ -65,5 +66,21 @@ int runSonarSuite(int repetitions, const std::string& outDir);
  * `logs` empty: ../shared/datasets/carmen/{intel,aces,csail}-corrected.log.gz
  * (relative to the worktree root, build/ or build/bin/). */
 int runLinesSuite(const std::vector<std::string>& logs, int repetitions);
+
+/** Leg detection / tracking / exclusion on a folder laid out like
+ * ../shared/datasets/legs (bench_legs.cpp); images go to outDir. */
+int runLegsSuite(const std::string& dataDir, const std::string& outDir, const std::string& configFile);
+
+/** Filter options: the INI text `profileIni`, then the [dynamic_objects]
+ * section of `configFile` (if not empty) on top, both range-checked. */
+dynamic::CDynamicObjectFilter::TOptions loadDynamicOptions(const std::string& profileIni, const std::string& configFile);
+
+/** Every 2D scan of a rawlog (either format), in file order. */
+std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> readScans(const std::string& rawlogPath);
+
+/** The dynamic object filter on simulated samples with walking people and
+ * per-beam ground truth (bench_legs_sim.cpp): every folder under dataDir
+ * holding sim.rawlog, ground_truth.tum, people.csv.gz, beam_labels.csv.gz. */
+int runLegsSimSuite(const std::string& dataDir, const std::string& outDir, const std::string& configFile);
 
 }  // namespace hslam::bench

@@ -5,6 +5,8 @@
  *   hslam-bench grid [--rawlog FILE ...] [--repetitions N]
  *   hslam-bench lines [--rawlog FILE|CARMEN.log.gz ...] [--repetitions N]
  *   hslam-bench sonar [--repetitions N]     (simulated runs; images into ./hslam-bench-sonar/)
+ *   hslam-bench legs --data DIR [--out DIR] [--config FILE]
+ *   hslam-bench legs-sim [--data rawlog_samples] [--out DIR] [--config FILE]
  */
 #include "bench_common.h"
 
@@ -14,13 +16,20 @@
 
 int main(int argc, char** argv)
 {
-	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, lines, sonar)", ' ', "0.1");
-	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid, lines, sonar", true, "", "suite", cmd);
+	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, lines, sonar, legs, legs-sim)", ' ', "0.1");
+	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid, lines, sonar, legs, legs-sim", true, "",
+												"suite", cmd);
 	TCLAP::MultiArg<std::string> rawlogs("r", "rawlog",
 										 "rawlog(s) with laser scans and odometry (default: MRPT's sample rawlog)",
 										 false, "file", cmd);
 	TCLAP::ValueArg<int> repetitions("n", "repetitions", "timed runs per measurement, best kept (default 5)", false,
 									 5, "N", cmd);
+	TCLAP::ValueArg<std::string> data("", "data", "legs: folder laid out like ../shared/datasets/legs; legs-sim: folder of simulated samples", false,
+									  "../shared/datasets/legs", "dir", cmd);
+	TCLAP::ValueArg<std::string> out("", "out", "folder for images written by a suite (default .)", false, ".",
+									 "dir", cmd);
+	TCLAP::ValueArg<std::string> config("c", "config", "legs suites: INI whose [dynamic_objects] overrides the suite's options",
+										false, "", "file", cmd);
 	try
 	{
 		if (!cmd.parse(argc, argv)) return 0;  // --help or --version was printed
@@ -29,7 +38,11 @@ int main(int argc, char** argv)
 		if (inputs.empty()) inputs.push_back(hslam::bench::kMrptSampleRawlog);
 		if (suite.getValue() == "grid") return hslam::bench::runGridSuite(inputs, std::max(1, repetitions.getValue()));
 		if (suite.getValue() == "sonar") return hslam::bench::runSonarSuite(std::max(1, repetitions.getValue()), "hslam-bench-sonar");
-		std::cerr << "hslam-bench: unknown suite '" << suite.getValue() << "' (available: grid, lines, sonar)\n";
+		if (suite.getValue() == "legs") return hslam::bench::runLegsSuite(data.getValue(), out.getValue(), config.getValue());
+		if (suite.getValue() == "legs-sim")
+			return hslam::bench::runLegsSimSuite(data.isSet() ? data.getValue() : "rawlog_samples", out.getValue(),
+												 config.getValue());
+		std::cerr << "hslam-bench: unknown suite '" << suite.getValue() << "' (available: grid, lines, sonar, legs, legs-sim)\n";
 		return 1;
 	}
 	catch (const TCLAP::ArgException& e)

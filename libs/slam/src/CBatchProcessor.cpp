@@ -39,6 +39,8 @@ TBatchResult CBatchProcessor::run()
 	CMappingPipeline pipeline(cfg);
 	TOutputOptions outputOptions;
 	common::loadOptions(outputOptions, cfg, "output");
+	if (outputOptions.dynamic_debug_images)
+		pipeline.keepDynamicDebugFrames(static_cast<size_t>(outputOptions.dynamic_debug_max_images));
 	std::filesystem::create_directories(m_request.output_dir);
 	addDebugFrameWriter(pipeline, outputOptions.debug_frames_every);
 
@@ -120,7 +122,8 @@ void CBatchProcessor::printSummary(const CMappingPipeline& pipeline, const TBatc
 	m_out << "\nTiming per call:\n";
 	pipeline.timer().printTable(m_out);
 	m_out << "\nResults written to " << m_request.output_dir << "/ (map.png, tiles/, map.gridmap.gz, "
-		  << "trajectory.tum, odometry.tum, timing.csv, config_used.ini)\n";
+		  << "trajectory.tum, odometry.tum, timing.csv, config_used.ini"
+		  << (pipeline.dynamicFilter() ? ", tracks.csv" : "") << ")\n";
 	if (!result.input_error.empty())
 		m_err << "error: " << result.input_error << "\n"
 			  << "       results for the " << c.entries << " entries read before the fault were written.\n";

@@ -1,4 +1,5 @@
 #include <hslam/common/options_io.h>
+#include <hslam/dynamic/occupied_cells.h>
 #include <hslam/slam/CMappingPipeline.h>
 #include <hslam/slam/CScanMatchingPoseEstimator.h>
 #include <mrpt/obs/CObservationComment.h>
@@ -24,7 +25,7 @@ common::TTimedPose2D timedPose(const mrpt::obs::CObservation& obs, const mrpt::p
 
 std::vector<std::string> CMappingPipeline::sections()
 {
-	std::vector<std::string> s{"process", "grid", "laser_model", "pose_estimation"};
+	std::vector<std::string> s{"process", "grid", "laser_model", "pose_estimation", "dynamic_objects"};
 	for (const auto& e : CScanMatchingPoseEstimator::sections()) s.push_back(e);
 	return s;
 }
@@ -34,8 +35,20 @@ CMappingPipeline::CMappingPipeline(const mrpt::config::CConfigFileBase& cfg)
 	  m_poseOptions(loaded<TPoseEstimationOptions>(cfg, "pose_estimation")),
 	  m_grid(loaded<maps::CTiledOccupancyGrid::TOptions>(cfg, "grid")),
 	  m_laserInserter(loaded<maps::CLaserGridInserter::TOptions>(cfg, "laser_model")),
+	  m_dynamicOptions(loaded<dynamic::CDynamicObjectFilter::TOptions>(cfg, "dynamic_objects")),
 	  m_estimator(createPoseEstimator(m_poseOptions, cfg, m_timer))
 {
+	if (m_dynamicOptions.enabled)
+	{
+		try
+		{
+			m_dynamicFilter = std::make_unique<dynamic::CDynamicObjectFilter>(m_dynamicOptions);
+		}
+		catch (const std::invalid_argument& e)
+		{
+			throw common::config_error(std::string("[dynamic_objects] ") + e.what());
+		}
+	}
 }
 
 void CMappingPipeline::saveOptions(mrpt::config::CConfigFileBase& out) const
@@ -45,6 +58,7 @@ void CMappingPipeline::saveOptions(mrpt::config::CConfigFileBase& out) const
 	common::saveOptions(m_laserInserter.options(), out, "laser_model");
 	common::saveOptions(m_poseOptions, out, "pose_estimation");
 	m_estimator->saveOptions(out);
+	common::saveOptions(m_dynamicOptions, out, "dynamic_objects");
 }
 
 void CMappingPipeline::processEntry(const io::TRawlogEntry& entry)
@@ -104,9 +118,10 @@ void CMappingPipeline::processScan(const mrpt::obs::CObservation2DRangeScan& sca
 		estimate = m_estimator->update(increment, scan);
 	}
 	const mrpt::poses::CPose2D pose = estimate.pose;
+	const std::vector<bool>* excluded = filterDynamicObjects(scan, pose);
 	{
 		common::CStageTimer::CScope t(m_timer, "grid_update");
-		m_laserInserter.insert(m_grid, pose, scan);
+		m_laserInserter.insert(m_grid, pose, scan, excluded);
 	}
 	m_trajectory.push_back(timedPose(scan, pose));
 	m_odometryTrajectory.push_back(timedPose(scan, m_deadReckoningPose));
@@ -114,6 +129,19 @@ void CMappingPipeline::processScan(const mrpt::obs::CObservation2DRangeScan& sca
 	for (const auto& observer : m_estimateObservers) observer(scan, estimate);
 	estimate.lines.clear();
 	m_estimates.push_back({mrpt::Clock::toDouble(scan.timestamp), std::move(estimate)});
+}
+
+const std::vector<bool>* CMappingPipeline::filterDynamicObjects(const mrpt::obs::CObservation2DRangeScan& scan,
+																const mrpt::poses::CPose2D& pose)
+{
+	if (!m_dynamicFilter) return nullptr;
+	common::CStageTimer::CScope t(m_timer, "dynamic_objects");
+	const auto& frame = m_dynamicFilter->process(scan, pose, mrpt::Clock::toDouble(scan.timestamp));
+	dynamic::undoOccupiedHits(m_grid, frame.retro_clear_world, m_laserInserter.options().occupied_probability);
+	const size_t scanIndex = m_counters.laser_scans - 1;
+	dynamic::appendTrackRows(frame, scanIndex, m_trackRows);
+	if (m_debugFrames.size() < m_debugFramesMax && !frame.legs.empty()) m_debugFrames.push_back({scanIndex, scan, frame});
+	return &frame.beam_is_dynamic;
 }
 
 }  // namespace hslam::slam

@@ -6,6 +6,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 
 namespace hslam::slam
@@ -64,6 +66,24 @@ void writeTiming(const common::CStageTimer& timer, const std::string& dir, std::
 	written.push_back(dir + "/timing.csv");
 	written.push_back(dir + "/timing.txt");
 }
+void writeDynamicObjects(const CMappingPipeline& pipeline, const std::string& dir, std::vector<std::string>& written)
+{
+	if (!pipeline.dynamicFilter()) return;
+	const std::string path = dir + "/tracks.csv";
+	std::ofstream csv(path);
+	dynamic::writeTracksCsv(csv, pipeline.trackRows());
+	if (!csv) throw std::runtime_error(path + ": cannot write");
+	written.push_back(path);
+	if (pipeline.dynamicDebugFrames().empty()) return;
+	std::filesystem::create_directories(dir + "/dynamic");
+	for (const auto& f : pipeline.dynamicDebugFrames())
+	{
+		std::ostringstream name;
+		name << dir << "/dynamic/scan_" << std::setw(6) << std::setfill('0') << f.scan_index << ".png";
+		savePng(dynamic::renderDynamicFrame(f.scan, f.frame), name.str());
+		written.push_back(name.str());
+	}
+}
 }  // namespace
 
 void writePoseEstimatesCsv(const std::vector<CMappingPipeline::TTimedEstimate>& estimates, const std::string& path)
@@ -113,6 +133,7 @@ std::vector<std::string> writeMappingOutputs(const CMappingPipeline& pipeline, c
 	written.push_back(dir + "/pose_estimates.csv");
 	savePng(renderPosePlot(pipeline.estimates(), pipeline.odometryTrajectory()), dir + "/pose_plot.png");
 	written.push_back(dir + "/pose_plot.png");
+	writeDynamicObjects(pipeline, dir, written);
 	return written;
 }
 

@@ -1,14 +1,19 @@
 /* hslam: the mapping pipeline, the one place where the stages of thesis
  * figure 55 are wired together and timed. Per laser scan:
  *     odometry increment -> pose estimation -> tiled grid update (laser)
- * Later stages (leg filter, line features, sonar) plug in here.
+ *     ... -> dynamic object filter (thesis 4.7; beams hitting confirmed
+ *     moving people are not marked occupied) -> tiled grid update (laser)
+ * Later stages (line features, sonar) plug in here.
  *
  * INI sections read (see config_ini/hslam-default.ini): [process], [grid],
- * [laser_model], [pose_estimation]; unknown keys in them are errors. */
+ * [laser_model], [pose_estimation], [dynamic_objects]; unknown keys in them
+ * are errors. */
 #pragma once
 
 #include <hslam/common/CStageTimer.h>
 #include <hslam/common/tum_trajectory.h>
+#include <hslam/dynamic/CDynamicObjectFilter.h>
+#include <hslam/dynamic/dynamic_outputs.h>
 #include <hslam/io/CRawlogReader.h>
 #include <hslam/maps/CLaserGridInserter.h>
 #include <hslam/maps/CTiledOccupancyGrid.h>
@@ -63,6 +68,21 @@ class CMappingPipeline
 	const TPipelineCounters& counters() const { return m_counters; }
 	std::string poseEstimatorName() const { return m_estimator->name(); }
 
+	/** Dynamic object filter ([dynamic_objects] enabled = true), else null. */
+	const dynamic::CDynamicObjectFilter* dynamicFilter() const { return m_dynamicFilter.get(); }
+	/** Live leg and person tracks after every scan (for tracks.csv). */
+	const std::vector<dynamic::TTrackRow>& trackRows() const { return m_trackRows; }
+	/** A scan and the filter state after it, kept for debug images. */
+	struct TDebugFrame
+	{
+		size_t scan_index = 0;  //!< 0-based among the mapped scans
+		mrpt::obs::CObservation2DRangeScan scan;
+		dynamic::TDynamicFrame frame;
+	};
+	/** Keep the first `maxFrames` scans in which the filter found legs (0 = none). */
+	void keepDynamicDebugFrames(size_t maxFrames) { m_debugFramesMax = maxFrames; }
+	const std::vector<TDebugFrame>& dynamicDebugFrames() const { return m_debugFrames; }
+
 	/** Called for every mapped scan with the pose it was inserted at
 	 * (benchmarks, debug images, live viewers). */
 	using TScanObserver = std::function<void(const mrpt::obs::CObservation2DRangeScan&, const mrpt::poses::CPose2D&)>;
@@ -88,12 +108,20 @@ class CMappingPipeline
    private:
 	void processObservation(const mrpt::obs::CObservation::Ptr& obs);
 	void processScan(const mrpt::obs::CObservation2DRangeScan& scan);
+	/** Runs the dynamic object filter; returns its per-beam mask or null. */
+	const std::vector<bool>* filterDynamicObjects(const mrpt::obs::CObservation2DRangeScan& scan,
+												  const mrpt::poses::CPose2D& pose);
 
 	common::CStageTimer m_timer;  // first: the estimator keeps a reference to it
 	TProcessOptions m_processOptions;
 	TPoseEstimationOptions m_poseOptions;
 	maps::CTiledOccupancyGrid m_grid;
 	maps::CLaserGridInserter m_laserInserter;
+	dynamic::CDynamicObjectFilter::TOptions m_dynamicOptions;
+	std::unique_ptr<dynamic::CDynamicObjectFilter> m_dynamicFilter;
+	std::vector<dynamic::TTrackRow> m_trackRows;
+	size_t m_debugFramesMax = 0;
+	std::vector<TDebugFrame> m_debugFrames;
 	std::unique_ptr<CPoseEstimator> m_estimator;
 	COdometryTracker m_odometry;
 	mrpt::poses::CPose2D m_deadReckoningPose;

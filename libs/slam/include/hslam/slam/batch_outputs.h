@@ -7,7 +7,9 @@
  *   timing.csv / .txt   per-stage time per scan: mean, p95, max
  *   pose_estimates.csv  per scan: pose, standard deviations, match method/quality/NIS
  *   pose_plot.png       x, y, theta over time with +-1 sigma and odometry (thesis figs 117-127)
- *   frames/frame_N.png  on request (debug_frames_every): scan with its line segments (figs 88, 95) */
+ *   frames/frame_N.png  on request (debug_frames_every): scan with its line segments (figs 88, 95)
+ *   tracks.csv          leg and person tracks per scan (dynamic object filter on)
+ *   dynamic/scan_N.png  per-scan debug images of the filter (dynamic_debug_images) */
 #pragma once
 
 #include <hslam/slam/CMappingPipeline.h>
@@ -25,6 +27,8 @@ struct TOutputOptions
 	int tile_pixels_per_cell = 1;  //!< scale of the tile images
 	bool draw_odometry = true;  //!< also draw the dead-reckoning path on map.png
 	int debug_frames_every = 0;  //!< write frames/frame_N.png for every N-th scan; 0 = none
+	bool dynamic_debug_images = false;  //!< write dynamic/scan_N.png (thesis figures 156-165)
+	int dynamic_debug_max_images = 200;  //!< first scans with legs that get an image
 
 	template <class V>
 	void visit(V& v)
@@ -35,6 +39,8 @@ struct TOutputOptions
 		v.integer("tile_pixels_per_cell", tile_pixels_per_cell, 1, 16);
 		v.flag("draw_odometry", draw_odometry);
 		v.integer("debug_frames_every", debug_frames_every, 0, 1000000);
+		v.flag("dynamic_debug_images", dynamic_debug_images);
+		v.integer("dynamic_debug_max_images", dynamic_debug_max_images, 1, 1000000);
 	}
 };
 

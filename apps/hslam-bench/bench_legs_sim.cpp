@@ -1,0 +1,268 @@
+/* hslam-bench legs-sim: the dynamic object filter (libs/dynamic, thesis
+ * defaults) on simulated samples with walking people, where the truth is
+ * known (rawlog_samples/<name>/ from hslam-simulate):
+ *   - per-beam precision / recall of "hits a confirmed dynamic object"
+ *     against beam_labels.csv.gz (kind = person_leg);
+ *   - identity switches per person: the dynamic person track nearest each
+ *     true person (people.csv.gz, within 0.5 m) changing id, over the scans
+ *     where the person is hit by >= 3 beams within the detector's range
+ *     (coverage = share of those scans with a dynamic track on the person);
+ *     also counted: switches after a gap no longer than the tracker's memory
+ *     (those re-identification is meant to avoid);
+ *   - map cells wrongly occupied by people, with / without exclusion: grid
+ *     cells hit only by person beams (never by a static-structure beam) that
+ *     end occupied.
+ * Robot poses: the ground truth (ground_truth.tum, one pose per scan), so the
+ * numbers measure the filter, not odometry drift. */
+#include "bench_common.h"
+
+#include <hslam/common/options_io.h>
+#include <hslam/common/tum_trajectory.h>
+#include <hslam/dynamic/CDynamicObjectFilter.h>
+#include <hslam/dynamic/occupied_cells.h>
+#include <hslam/io/CGzLineReader.h>
+#include <hslam/maps/CLaserGridInserter.h>
+#include <hslam/maps/grid_rendering.h>
+#include <mrpt/system/datetime.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace hslam::bench
+{
+namespace
+{
+namespace fs = std::filesystem;
+
+/** Rows of a (gz) CSV as column name -> text. */
+std::vector<std::map<std::string, std::string>> readCsv(const std::string& path)
+{
+	io::CGzLineReader in(path);
+	std::string line;
+	if (!in.nextLine(line)) throw std::runtime_error(path + ": empty file");
+	std::vector<std::string> header;
+	std::stringstream hs(line);
+	for (std::string h; std::getline(hs, h, ',');) header.push_back(h);
+	std::vector<std::map<std::string, std::string>> rows;
+	while (in.nextLine(line))
+	{
+		std::stringstream ls(line);
+		std::map<std::string, std::string> row;
+		size_t k = 0;
+		for (std::string f; std::getline(ls, f, ','); ++k)
+			if (k < header.size()) row[header[k]] = f;
+		if (k != header.size())
+			throw std::runtime_error(path + ":" + std::to_string(in.lineNumber()) + ": " + std::to_string(k) +
+									 " fields, header has " + std::to_string(header.size()));
+		rows.push_back(std::move(row));
+	}
+	return rows;
+}
+
+double number(const std::map<std::string, std::string>& row, const std::string& key, const std::string& file)
+{
+	const auto it = row.find(key);
+	if (it == row.end()) throw std::runtime_error(file + ": no column '" + key + "'");
+	try
+	{
+		return std::stod(it->second);
+	}
+	catch (const std::exception&)
+	{
+		throw std::runtime_error(file + ": column '" + key + "' value '" + it->second + "' is not a number");
+	}
+}
+
+struct TSimResult
+{
+	size_t scans = 0, tp = 0, fp = 0, fn = 0;
+	size_t people = 0, person_frames = 0, covered_frames = 0, id_switches = 0, id_switches_short = 0;
+	size_t people_cells_without = 0, people_cells_with = 0;
+	double filter_s = 0;
+};
+
+TSimResult runSample(const fs::path& dir, const dynamic::CDynamicObjectFilter::TOptions& options,
+					 const std::string& pngPath)
+{
+	const std::string rawlog = (dir / "sim.rawlog").string();
+	std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> scans;
+	for (const auto& s : readScans(rawlog))
+		if (s->sensorLabel == "LASER") scans.push_back(s);
+	const auto truth = common::readTumFile((dir / "ground_truth.tum").string());
+	if (truth.size() != scans.size())
+		throw std::runtime_error((dir / "ground_truth.tum").string() + ": " + std::to_string(truth.size()) +
+								 " poses for " + std::to_string(scans.size()) + " laser scans");
+
+	const std::string labelsFile = (dir / "beam_labels.csv.gz").string(), peopleFile = (dir / "people.csv.gz").string();
+	std::vector<std::set<size_t>> personBeams(scans.size());
+	std::vector<std::map<int, size_t>> beamsOfPerson(scans.size());  // visible people per scan
+	for (const auto& row : readCsv(labelsFile))
+		if (row.at("kind") == "person_leg")
+		{
+			const size_t scan = static_cast<size_t>(number(row, "scan", labelsFile));
+			if (scan >= scans.size()) continue;
+			personBeams[scan].insert(static_cast<size_t>(number(row, "beam", labelsFile)));
+			beamsOfPerson[scan][static_cast<int>(number(row, "object", labelsFile))]++;
+		}
+	std::vector<std::vector<std::pair<int, mrpt::math::TPoint2D>>> people(scans.size());
+	std::set<int> personIds;
+	for (const auto& row : readCsv(peopleFile))
+	{
+		const size_t scan = static_cast<size_t>(number(row, "scan", peopleFile));
+		const int id = static_cast<int>(number(row, "person", peopleFile));
+		personIds.insert(id);
+		if (scan < scans.size())
+			people[scan].push_back({id, {number(row, "x_m", peopleFile), number(row, "y_m", peopleFile)}});
+	}
+
+	TSimResult r;
+	r.people = personIds.size();
+	dynamic::CDynamicObjectFilter filter(options);
+	maps::CLaserGridInserter inserter;
+	maps::CTiledOccupancyGrid without, with;
+	std::set<std::pair<int, int>> personCells, staticCells;
+	std::map<int, int> lastTrackOf;  // true person -> last matched track id
+	std::map<int, double> lastMatch_s;  // true person -> time of that match
+	for (size_t i = 0; i < scans.size(); ++i)
+	{
+		const auto& scan = *scans[i];
+		const mrpt::poses::CPose2D pose(truth[i].pose);
+		const auto t0 = std::chrono::steady_clock::now();
+		const auto& frame = filter.process(scan, pose, mrpt::Clock::toDouble(scan.timestamp));
+		r.filter_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+		++r.scans;
+		inserter.insert(without, pose, scan);
+		inserter.insert(with, pose, scan, &frame.beam_is_dynamic);
+		dynamic::undoOccupiedHits(with, frame.retro_clear_world, inserter.options().occupied_probability);
+
+		const mrpt::poses::CPose2D sensor = pose + mrpt::poses::CPose2D(scan.sensorPose);
+		for (size_t b = 0; b < scan.getScanSize(); ++b)
+		{
+			const bool truthDyn = personBeams[i].count(b) > 0, flagged = frame.beam_is_dynamic[b];
+			r.tp += truthDyn && flagged;
+			r.fp += !truthDyn && flagged;
+			r.fn += truthDyn && !flagged;
+			const double range = scan.getScanRange(b);
+			if (!scan.getScanRangeValidity(b) || range > inserter.options().max_range_m) continue;
+			const double a = dynamic::beamBearing(scan, b) - scan.sensorPose.yaw();
+			double x, y;
+			sensor.composePoint(range * std::cos(a), range * std::sin(a), x, y);
+			const auto c = without.geometry().cellOf(x, y);
+			(truthDyn ? personCells : staticCells).insert({c.gx, c.gy});
+		}
+		// Identity: the dynamic person track nearest each true person seen by
+		// at least 3 beams within the detector's range.
+		for (const auto& [id, p] : people[i])
+		{
+			const auto seen = beamsOfPerson[i].find(id);
+			if (seen == beamsOfPerson[i].end() || seen->second < 3 ||
+				pose.distanceTo(mrpt::poses::CPose2D(p.x, p.y, 0)) > filter.options().detector.max_range_m)
+				continue;
+			++r.person_frames;
+			int best = -1;
+			double bestD = 0.5;
+			for (const auto& t : frame.person_tracks)
+			{
+				const double d = std::hypot(t.x[0] - p.x, t.x[1] - p.y);
+				if (t.state == dynamic::ETrackState::dynamic && d < bestD) bestD = d, best = t.id;
+			}
+			if (best < 0) continue;
+			++r.covered_frames;
+			const auto last = lastTrackOf.find(id);
+			const double t = mrpt::Clock::toDouble(scan.timestamp);
+			if (last != lastTrackOf.end() && last->second != best)
+			{
+				++r.id_switches;
+				// Within the tracker's memory: a switch re-identification should have avoided.
+				r.id_switches_short += t - lastMatch_s[id] <= filter.options().tracker.memory_s;
+			}
+			lastTrackOf[id] = best;
+			lastMatch_s[id] = t;
+		}
+	}
+	// Cells only people ever hit (not within one cell of a static hit) that end occupied.
+	const auto onlyPeople = [&](const maps::CTiledOccupancyGrid& g) {
+		size_t n = 0;
+		for (const auto& c : dynamic::occupiedCells(g))
+		{
+			if (!personCells.count({c.gx, c.gy})) continue;
+			bool nearStatic = false;
+			for (int dy = -1; dy <= 1; ++dy)
+				for (int dx = -1; dx <= 1; ++dx) nearStatic |= staticCells.count({c.gx + dx, c.gy + dy}) > 0;
+			n += !nearStatic;
+		}
+		return n;
+	};
+	r.people_cells_without = onlyPeople(without);
+	r.people_cells_with = onlyPeople(with);
+
+	auto frame = maps::frameForObservedArea(without, 5, 2);
+	const auto a = maps::renderGrid(without, frame), b = maps::renderGrid(with, frame);
+	mrpt::img::CImage both(a.getWidth() * 2 + 10, a.getHeight(), mrpt::img::CH_RGB);
+	both.filledRectangle(0, 0, static_cast<int>(both.getWidth()) - 1, static_cast<int>(both.getHeight()) - 1,
+						 mrpt::img::TColor(255, 255, 255));
+	both.drawImage(0, 0, a);
+	both.drawImage(static_cast<int>(a.getWidth()) + 10, 0, b);
+	both.textOut(5, 5, "without exclusion", mrpt::img::TColor(200, 0, 0));
+	both.textOut(static_cast<int>(a.getWidth()) + 15, 5, "with exclusion", mrpt::img::TColor(0, 130, 0));
+	if (!both.saveToFile(pngPath)) throw std::runtime_error(pngPath + ": cannot write");
+	return r;
+}
+
+double ratio(size_t a, size_t b) { return static_cast<double>(a) / static_cast<double>(std::max<size_t>(1, b)); }
+}  // namespace
+
+int runLegsSimSuite(const std::string& dataDir, const std::string& outDir, const std::string& configFile)
+{
+	// Thesis defaults (the simulated LMS200 has the thesis' 1 deg), or [dynamic_objects] of configFile.
+	const auto options = loadDynamicOptions("", configFile);
+	std::vector<fs::path> samples;
+	for (const auto& e : fs::directory_iterator(dataDir))
+		if (fs::exists(e.path() / "sim.rawlog") && fs::exists(e.path() / "beam_labels.csv.gz") &&
+			fs::exists(e.path() / "people.csv.gz") && fs::exists(e.path() / "ground_truth.tum"))
+			samples.push_back(e.path());
+	std::sort(samples.begin(), samples.end());
+	if (samples.empty()) throw std::runtime_error(dataDir + ": no simulated samples (sim.rawlog + labels) found");
+	fs::create_directories(outDir);
+
+	TSimResult total;
+	std::cout << "Simulated samples (ground-truth poses; options: " << (configFile.empty() ? "thesis defaults" : configFile) << ")\n"
+			  << "  sample     scans people  beam precision  recall  coverage  id switches  people cells without/with\n";
+	for (const auto& dir : samples)
+	{
+		const std::string name = dir.filename().string();
+		const auto r = runSample(dir, options, outDir + "/legs_sim_" + name + "_maps.png");
+		std::cout << "  " << std::left << std::setw(10) << name << std::right << std::setw(6) << r.scans
+				  << std::setw(7) << r.people << std::fixed << std::setprecision(3) << std::setw(16)
+				  << ratio(r.tp, r.tp + r.fp) << std::setw(8) << ratio(r.tp, r.tp + r.fn) << std::setw(10)
+				  << ratio(r.covered_frames, r.person_frames) << std::setw(13) << r.id_switches << std::setw(16)
+				  << r.people_cells_without << " / " << r.people_cells_with << "\n";
+		total.scans += r.scans;
+		total.tp += r.tp, total.fp += r.fp, total.fn += r.fn;
+		total.people += r.people, total.person_frames += r.person_frames, total.covered_frames += r.covered_frames;
+		total.id_switches += r.id_switches;
+		total.id_switches_short += r.id_switches_short;
+		total.people_cells_without += r.people_cells_without, total.people_cells_with += r.people_cells_with;
+		total.filter_s += r.filter_s;
+	}
+	std::cout << "  maps side by side: " << outDir << "/legs_sim_<sample>_maps.png\n\n"
+			  << std::setprecision(4) << "sim_scans=" << total.scans << "\nsim_beam_precision="
+			  << ratio(total.tp, total.tp + total.fp) << "\nsim_beam_recall=" << ratio(total.tp, total.tp + total.fn)
+			  << "\nsim_person_coverage=" << ratio(total.covered_frames, total.person_frames)
+			  << "\nsim_id_switches_per_person=" << ratio(total.id_switches, total.people)
+			  << "\nsim_id_switches_within_memory_per_person=" << ratio(total.id_switches_short, total.people)
+			  << "\nsim_people_cells_without=" << total.people_cells_without
+			  << "\nsim_people_cells_with=" << total.people_cells_with << "\nsim_people_cells_reduction="
+			  << (total.people_cells_without ? 1.0 - ratio(total.people_cells_with, total.people_cells_without) : 0.0)
+			  << "\nsim_filter_us_per_scan=" << 1e6 * total.filter_s / std::max<size_t>(1, total.scans) << "\n";
+	return 0;
+}
+
+}  // namespace hslam::bench

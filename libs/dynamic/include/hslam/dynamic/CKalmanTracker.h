@@ -1,0 +1,163 @@
+/* hslam: multi-target tracker for leg and person positions (thesis 4.7.2,
+ * figures 152-153, eq. 88-89, appendix H.1 dyn_det; 4.7.5/5.2 future work).
+ *
+ * Thesis: objects are associated frame to frame in polar coordinates after
+ * predicting where a static object would appear once the robot has moved
+ * (eq. 88-89 use only the forward distance dr); their radial and angular
+ * velocities are estimated; an object not matched for 3 frames is dropped
+ * (null counter); an object is dynamic only if it moves, and a static wall
+ * piece that passed the shape test (a "ghost") is dropped.
+ *
+ * Here:
+ *  - Every track keeps a constant-velocity Kalman filter (state x, y, vx, vy
+ *    in the WORLD frame; white-noise acceleration accel_noise_mps2). Its
+ *    prediction, transformed into the CURRENT sensor frame with the full
+ *    sensor pose (x, y, heading), is the generalisation of eq. 88-89: a
+ *    static object keeps its world position whatever the robot does, so it
+ *    gets zero velocity, and a moving one its own velocity.
+ *  - Association in polar coordinates of the current sensor frame, as in
+ *    the thesis: |r - r_pred| <= gate_range_m and |theta - theta_pred| <=
+ *    gate_bearing_deg (H.1: 10 deg), both widened by the number of missed
+ *    frames; nearest pairs first (greedy, one to one).
+ *  - Life cycle: tentative -> dynamic once the track has moved
+ *    confirm_travel_m from where it was born (seen in >= confirm_hits
+ *    frames) and, if confirm_free_hits > 0, was seen that many times where
+ *    the sensor had seen free space before (beyond the thesis: a track
+ *    hopping between static clutter also "moves", but never into space
+ *    that was free); a track still short of that after ghost_after_frames hits
+ *    becomes static (a ghost: never reported as dynamic, it may still turn
+ *    dynamic if it starts moving); max_misses consecutive missed frames drop
+ *    a track (thesis: 3).
+ *  - Memory (beyond the thesis): a dropped dynamic track is remembered for
+ *    memory_s; a new observation within memory_gate_m of where it was
+ *    lost (or of its constant-velocity extrapolation) takes over its id and
+ *    dynamic state (the state only if the observation has motion evidence,
+ *    when evidence is given), so a person reappearing after an occlusion
+ *    keeps its identity. Likewise a younger track (not a ghost) near where
+ *    a dropped dynamic track would be takes over its id (the observation
+ *    had jumped out of the old track's gate).
+ * Velocities are reported in the world frame and, as in the thesis, as
+ * radial (m/s) and angular (rad/s) components seen from the sensor. */
+#pragma once
+
+#include <mrpt/math/TPoint2D.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <Eigen/Dense>
+#include <vector>
+
+namespace hslam::dynamic
+{
+enum class ETrackState
+{
+	tentative,
+	dynamic,
+	ghost
+};
+
+const char* toString(ETrackState s);
+
+struct TTrack
+{
+	int id = 0;
+	ETrackState state = ETrackState::tentative;
+	Eigen::Vector4d x = Eigen::Vector4d::Zero();  //!< world x, y (m), vx, vy (m/s)
+	Eigen::Matrix4d P = Eigen::Matrix4d::Identity();
+	double t_last_s = 0;  //!< time of the last prediction
+	double t_seen_s = 0;  //!< time of the last associated observation
+	int hits = 0, misses = 0;
+	mrpt::math::TPoint2D birth_m;  //!< first observed world position
+	double travel_m = 0;  //!< largest distance of an observation from birth_m
+	int free_hits = 0;  //!< observations that came with motion evidence (see update())
+	int observation = -1;  //!< index of the observation associated in the last update, -1 if missed
+	/** Polar state in the sensor frame of the last update (thesis H.1 obj[]). */
+	double range_m = 0, bearing_rad = 0, v_radial_mps = 0, v_angular_radps = 0;
+
+	mrpt::math::TPoint2D position() const { return {x[0], x[1]}; }
+	double speed_mps() const { return std::hypot(x[2], x[3]); }
+};
+
+class CKalmanTracker
+{
+   public:
+	struct TOptions
+	{
+		double gate_range_m = 0.4;  //!< polar gate, range part (H.1 uses 1.3 x robot travel)
+		double gate_bearing_rad = 10.0 * M_PI / 180;  //!< polar gate, bearing part (H.1: 10 deg)
+		double gate_min_cross_m = 0.25;  //!< the bearing gate never narrower than this across the beam (m)
+		int max_misses = 3;  //!< thesis null counter: dropped after 3 missed frames
+		double confirm_travel_m = 0.20;  //!< distance from birth that makes a track dynamic
+		int confirm_hits = 2;  //!< observations needed before a track can be dynamic
+		int ghost_after_frames = 5;  //!< hits after which a track that has not moved is a ghost
+		double accel_noise_mps2 = 3.0;  //!< CV model process noise (walking people)
+		double measurement_noise_m = 0.05;  //!< position noise of a leg/person observation
+		double max_speed_mps = 3.0;  //!< initial velocity uncertainty and speed cap
+		double memory_s = 2.0;  //!< how long a lost dynamic track can be re-identified
+		double memory_gate_m = 0.7;  //!< re-identification radius
+		int confirm_free_hits = 1;  //!< observations with motion evidence needed to confirm (0: thesis rule; waived when update() gets no evidence)
+
+		template <class V>
+		void visit(V& v)
+		{
+			v.real("gate_range_m", gate_range_m, 0.01, 10.0);
+			v.degrees("gate_bearing_deg", gate_bearing_rad, 0.1, 180.0);
+			v.real("gate_min_cross_m", gate_min_cross_m, 0.0, 10.0);
+			v.integer("max_misses", max_misses, 1, 1000);
+			v.real("confirm_travel_m", confirm_travel_m, 0.0, 10.0);
+			v.integer("confirm_hits", confirm_hits, 1, 1000);
+			v.integer("ghost_after_frames", ghost_after_frames, 1, 1000);
+			v.real("accel_noise_mps2", accel_noise_mps2, 0.001, 100.0);
+			v.real("measurement_noise_m", measurement_noise_m, 0.001, 10.0);
+			v.real("max_speed_mps", max_speed_mps, 0.01, 100.0);
+			v.real("memory_s", memory_s, 0.0, 3600.0);
+			v.real("memory_gate_m", memory_gate_m, 0.0, 100.0);
+			v.integer("confirm_free_hits", confirm_free_hits, 0, 1000);
+		}
+	};
+
+	CKalmanTracker() : CKalmanTracker(TOptions()) {}
+	explicit CKalmanTracker(const TOptions& options) : m_options(options) {}
+
+	/** One frame: `observations` are world positions, `sensorPose` the sensor
+	 * pose in the world at time `t_s` (s). Returns, per observation, the id
+	 * of the track it now belongs to (new tracks are created for the rest).
+	 * `motionEvidence` (optional, one flag per observation) marks observations
+	 * lying where the sensor saw free space before; confirm_free_hits of them
+	 * are needed before a track can be confirmed dynamic. */
+	std::vector<int> update(const std::vector<mrpt::math::TPoint2D>& observations,
+							const mrpt::poses::CPose2D& sensorPose, double t_s,
+							const std::vector<bool>* motionEvidence = nullptr);
+
+	/** Live tracks (tentative, dynamic and ghost), after the last update. */
+	const std::vector<TTrack>& tracks() const { return m_tracks; }
+	const TTrack* find(int id) const;
+
+	const TOptions& options() const { return m_options; }
+	/** Number of tracks ever created (ids are 1..this). */
+	int createdTracks() const { return m_nextId - 1; }
+	/** Re-identifications from memory so far. */
+	size_t reidentifications() const { return m_reidentified; }
+
+   private:
+	struct TMemory
+	{
+		TTrack track;
+		double t_lost_s = 0;
+	};
+
+	void predict(TTrack& t, double t_s) const;
+	void correct(TTrack& t, const mrpt::math::TPoint2D& z) const;
+	bool inGate(const TTrack& t, const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose) const;
+	void updatePolar(TTrack& t, const mrpt::poses::CPose2D& sensorPose) const;
+	TTrack newTrack(const mrpt::math::TPoint2D& z, double t_s);
+	void registerHit(TTrack& t, const mrpt::math::TPoint2D& z, bool evidence) const;
+	void takeOverFromMemory(double t_s, std::vector<int>& owner);
+
+	TOptions m_options;
+	std::vector<TTrack> m_tracks;
+	std::vector<TMemory> m_memory;
+	int m_nextId = 1;
+	size_t m_reidentified = 0;
+};
+
+}  // namespace hslam::dynamic

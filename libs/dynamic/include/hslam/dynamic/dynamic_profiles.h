@@ -1,0 +1,27 @@
+/* hslam: named settings of the dynamic object filter for other sensors than
+ * the thesis' SICK at 1 deg (INI text for [dynamic_objects], loaded like a
+ * config file, so every value is range-checked the same way). */
+#pragma once
+
+namespace hslam::dynamic
+{
+/** Hokuyo at 0.35 deg with people up to 5 m (../shared/datasets/legs):
+ * only what the sensor and the scoring region dictate differs from the
+ * thesis defaults (docs/dynamic.md explains each value):
+ *  - max_range_m = 5: people are annotated up to 5 m (the thesis' 3.2 m is
+ *    its map range); find_interv gets one more band (2.2-3.2 m);
+ *  - leg_width_m = 0.10, width 0.05-0.25 m: the visible chord of a leg at
+ *    0.35 deg (thesis 4.7.1 cites 9-18 cm widths [20]; the thesis' 0.18 m
+ *    reproduces its 1 deg table but asks fine scans for more beams than a
+ *    leg gives);
+ *  - require_isolated: wall pieces cut at 300 mm are not legs. */
+inline const char* kHokuyoLegsProfileIni = R"([dynamic_objects]
+max_range_m = 5.0
+find_interv_bands_m = 1.0 1.2 1.5 2.2 3.2
+leg_width_m = 0.10
+min_width_m = 0.05
+max_width_m = 0.25
+require_isolated = true
+)";
+
+}  // namespace hslam::dynamic

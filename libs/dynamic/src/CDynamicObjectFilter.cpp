@@ -1,0 +1,211 @@
+#include <hslam/dynamic/CDynamicObjectFilter.h>
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+namespace hslam::dynamic
+{
+size_t TDynamicFrame::dynamicBeams() const
+{
+	return static_cast<size_t>(std::count(beam_is_dynamic.begin(), beam_is_dynamic.end(), true));
+}
+
+namespace
+{
+maps::CTiledOccupancyGrid::TOptions seenGridOptions(const CDynamicObjectFilter::TOptions& o)
+{
+	maps::CTiledOccupancyGrid::TOptions g;
+	g.resolution_m = o.free_space_resolution_m;
+	return g;
+}
+
+maps::CLaserGridInserter::TOptions seenInserterOptions(const CDynamicObjectFilter::TOptions& o)
+{
+	maps::CLaserGridInserter::TOptions l;
+	l.max_range_m = o.free_space_max_range_m;
+	l.insert_free_beyond_range = true;
+	return l;
+}
+}  // namespace
+
+CDynamicObjectFilter::CDynamicObjectFilter(const TOptions& options)
+	: m_options(options),
+	  m_detector(options.detector),
+	  m_legs(options.tracker),
+	  m_persons(options.tracker),
+	  m_seen(seenGridOptions(options)),
+	  m_seenInserter(seenInserterOptions(options))
+{
+}
+
+bool CDynamicObjectFilter::seenFreeBefore(const mrpt::math::TPoint2D& leg, const mrpt::poses::CPose2D& sensorPose) const
+{
+	const double dx = leg.x - sensorPose.x(), dy = leg.y - sensorPose.y(), r = std::hypot(dx, dy);
+	if (r < 1e-6) return false;
+	const double k = m_options.free_space_behind_m / r;
+	const auto c = m_seen.geometry().cellOf(leg.x + k * dx, leg.y + k * dy);
+	return m_seen.isObserved(c) && m_seen.occupancyProbability(c) < m_options.free_space_threshold;
+}
+
+void CDynamicObjectFilter::pairLegs(const std::vector<mrpt::math::TPoint2D>& legs,
+									std::vector<mrpt::math::TPoint2D>& persons, std::vector<int>& personOfLeg) const
+{
+	personOfLeg.assign(legs.size(), -1);
+	persons.clear();
+	std::vector<std::tuple<double, size_t, size_t>> pairs;
+	for (size_t a = 0; a < legs.size(); ++a)
+		for (size_t b = a + 1; b < legs.size(); ++b)
+		{
+			const double d = std::hypot(legs[a].x - legs[b].x, legs[a].y - legs[b].y);
+			if (d <= m_options.pair_max_distance_m) pairs.emplace_back(d, a, b);
+		}
+	std::sort(pairs.begin(), pairs.end());
+	for (const auto& [d, a, b] : pairs)
+	{
+		if (personOfLeg[a] >= 0 || personOfLeg[b] >= 0) continue;
+		personOfLeg[a] = personOfLeg[b] = static_cast<int>(persons.size());
+		persons.push_back({0.5 * (legs[a].x + legs[b].x), 0.5 * (legs[a].y + legs[b].y)});
+	}
+	for (size_t a = 0; a < legs.size(); ++a)
+		if (personOfLeg[a] < 0)
+		{
+			personOfLeg[a] = static_cast<int>(persons.size());
+			persons.push_back(legs[a]);
+		}
+}
+
+const TDynamicFrame& CDynamicObjectFilter::process(const mrpt::obs::CObservation2DRangeScan& scan,
+												   const mrpt::poses::CPose2D& robotPose, double t_s)
+{
+	m_frame = TDynamicFrame();
+	m_frame.t_s = t_s;
+	m_frame.robot_pose = robotPose;
+	m_frame.legs = m_detector.detect(scan);
+
+	std::vector<mrpt::math::TPoint2D> legsWorld;
+	for (const auto& l : m_frame.legs)
+	{
+		mrpt::math::TPoint2D w;
+		robotPose.composePoint(l.x_m, l.y_m, w.x, w.y);
+		legsWorld.push_back(w);
+	}
+	const mrpt::poses::CPose2D sensorPose = robotPose + mrpt::poses::CPose2D(scan.sensorPose);
+
+	for (const auto& l : legsWorld) m_frame.leg_in_free_space.push_back(seenFreeBefore(l, sensorPose));
+	const bool useEvidence = m_options.tracker.confirm_free_hits > 0;
+	m_frame.leg_track = m_legs.update(legsWorld, sensorPose, t_s, useEvidence ? &m_frame.leg_in_free_space : nullptr);
+	std::vector<mrpt::math::TPoint2D> personsWorld;
+	std::vector<int> personOfLeg;
+	pairLegs(legsWorld, personsWorld, personOfLeg);
+	std::vector<bool> personEvidence(personsWorld.size(), false);
+	for (size_t i = 0; i < legsWorld.size(); ++i)
+		if (m_frame.leg_in_free_space[i]) personEvidence[static_cast<size_t>(personOfLeg[i])] = true;
+	const std::vector<int> personIds =
+		m_persons.update(personsWorld, sensorPose, t_s, useEvidence ? &personEvidence : nullptr);
+
+	m_frame.person_track.resize(m_frame.legs.size());
+	m_frame.leg_is_dynamic.resize(m_frame.legs.size());
+	for (size_t i = 0; i < m_frame.legs.size(); ++i)
+	{
+		m_frame.person_track[i] = personIds[static_cast<size_t>(personOfLeg[i])];
+		const TTrack* leg = m_legs.find(m_frame.leg_track[i]);
+		const TTrack* person = m_persons.find(m_frame.person_track[i]);
+		m_frame.leg_is_dynamic[i] = (leg && leg->state == ETrackState::dynamic) ||
+									(person && person->state == ETrackState::dynamic);
+	}
+	m_frame.leg_tracks = m_legs.tracks();
+	m_frame.person_tracks = m_persons.tracks();
+	buildMask(scan, robotPose);
+	if (m_options.retro_clear_max_points > 0) collectLateExclusions(scan, robotPose);
+	if (useEvidence) m_seenInserter.insert(m_seen, robotPose, scan, &m_frame.beam_is_dynamic);
+	return m_frame;
+}
+
+void CDynamicObjectFilter::collectLateExclusions(const mrpt::obs::CObservation2DRangeScan& scan,
+												 const mrpt::poses::CPose2D& robotPose)
+{
+	// 1. Persons confirmed by now: release what they left in the map before.
+	for (const auto& t : m_frame.person_tracks)
+	{
+		const auto it = m_pendingHits.find(t.id);
+		if (t.state != ETrackState::dynamic || it == m_pendingHits.end()) continue;
+		m_frame.retro_clear_world.insert(m_frame.retro_clear_world.end(), it->second.begin(), it->second.end());
+		m_pendingHits.erase(it);
+	}
+	// 2. Beams inserted as occupied now that would have been masked if their
+	// person were confirmed: its leg segments, and for a tentative person
+	// the beams ending within mask_radius_m of it. Each beam counts once.
+	const size_t n = scan.getScanSize();
+	std::vector<int> personOfBeam(n, -1);
+	for (size_t i = 0; i < m_frame.legs.size(); ++i)
+		if (!m_frame.leg_is_dynamic[i])
+			for (size_t b = m_frame.legs[i].first_beam; b <= m_frame.legs[i].last_beam; ++b)
+				personOfBeam[b] = m_frame.person_track[i];
+	std::vector<std::pair<int, mrpt::math::TPoint2D>> tentative;  // id, robot-frame position
+	for (const auto& t : m_frame.person_tracks)
+		if (t.state == ETrackState::tentative && t.observation >= 0)
+			tentative.push_back({t.id, robotPose.inverseComposePoint(t.position())});
+	const double r2 = m_options.mask_radius_m * m_options.mask_radius_m;
+	const double sx = scan.sensorPose.x(), sy = scan.sensorPose.y();
+	const size_t cap = static_cast<size_t>(m_options.retro_clear_max_points);
+	for (size_t b = 0; b < n; ++b)
+	{
+		const double r = scan.getScanRange(b);
+		if (m_frame.beam_is_dynamic[b] || !scan.getScanRangeValidity(b) || !std::isfinite(r)) continue;
+		const double a = beamBearing(scan, b);
+		const double x = sx + r * std::cos(a), y = sy + r * std::sin(a);
+		for (size_t k = 0; k < tentative.size() && personOfBeam[b] < 0; ++k)
+		{
+			const auto& p = tentative[k].second;
+			if ((x - p.x) * (x - p.x) + (y - p.y) * (y - p.y) <= r2) personOfBeam[b] = tentative[k].first;
+		}
+		if (personOfBeam[b] < 0) continue;
+		auto& pending = m_pendingHits[personOfBeam[b]];
+		mrpt::math::TPoint2D w;
+		robotPose.composePoint(x, y, w.x, w.y);
+		pending.push_back(w);
+		if (pending.size() > cap) pending.erase(pending.begin());
+	}
+	for (auto it = m_pendingHits.begin(); it != m_pendingHits.end();)
+		it = m_persons.find(it->first) ? std::next(it) : m_pendingHits.erase(it);
+}
+
+void CDynamicObjectFilter::buildMask(const mrpt::obs::CObservation2DRangeScan& scan,
+									 const mrpt::poses::CPose2D& robotPose)
+{
+	const size_t n = scan.getScanSize();
+	auto& mask = m_frame.beam_is_dynamic;
+	mask.assign(n, false);
+	const size_t margin = static_cast<size_t>(m_options.mask_margin_beams);
+	for (size_t i = 0; i < m_frame.legs.size(); ++i)
+	{
+		if (!m_frame.leg_is_dynamic[i]) continue;
+		const auto& l = m_frame.legs[i];
+		const size_t from = l.first_beam >= margin ? l.first_beam - margin : 0;
+		const size_t to = std::min(n - 1, l.last_beam + margin);
+		for (size_t b = from; b <= to; ++b) mask[b] = true;
+	}
+	// Beams ending near a dynamic person (robot frame positions of the tracks).
+	std::vector<mrpt::math::TPoint2D> persons;
+	for (const auto& t : m_frame.person_tracks)
+		if (t.state == ETrackState::dynamic) persons.push_back(robotPose.inverseComposePoint(t.position()));
+	if (persons.empty() || m_options.mask_radius_m <= 0) return;
+	const double r2 = m_options.mask_radius_m * m_options.mask_radius_m;
+	const double sx = scan.sensorPose.x(), sy = scan.sensorPose.y();
+	for (size_t b = 0; b < n; ++b)
+	{
+		const double r = scan.getScanRange(b);
+		if (mask[b] || !scan.getScanRangeValidity(b) || !std::isfinite(r)) continue;
+		const double a = beamBearing(scan, b);
+		const double x = sx + r * std::cos(a), y = sy + r * std::sin(a);
+		for (const auto& p : persons)
+			if ((x - p.x) * (x - p.x) + (y - p.y) * (y - p.y) <= r2)
+			{
+				mask[b] = true;
+				break;
+			}
+	}
+}
+
+}  // namespace hslam::dynamic

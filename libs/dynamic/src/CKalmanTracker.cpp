@@ -1,0 +1,247 @@
+#include <hslam/dynamic/CKalmanTracker.h>
+#include <mrpt/math/wrap2pi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+namespace hslam::dynamic
+{
+const char* toString(ETrackState s)
+{
+	switch (s)
+	{
+		case ETrackState::tentative: return "tentative";
+		case ETrackState::dynamic: return "dynamic";
+		case ETrackState::ghost: return "ghost";
+	}
+	return "?";
+}
+
+const TTrack* CKalmanTracker::find(int id) const
+{
+	for (const auto& t : m_tracks)
+		if (t.id == id) return &t;
+	return nullptr;
+}
+
+void CKalmanTracker::predict(TTrack& t, double t_s) const
+{
+	const double dt = std::max(0.0, t_s - t.t_last_s);
+	t.t_last_s = std::max(t.t_last_s, t_s);
+	if (dt <= 0) return;
+	Eigen::Matrix4d F = Eigen::Matrix4d::Identity();
+	F(0, 2) = F(1, 3) = dt;
+	// Discrete white-noise acceleration, per axis [dt^4/4 dt^3/2; dt^3/2 dt^2] q.
+	const double q = m_options.accel_noise_mps2 * m_options.accel_noise_mps2;
+	Eigen::Matrix4d Q = Eigen::Matrix4d::Zero();
+	for (int a = 0; a < 2; ++a)
+	{
+		Q(a, a) = 0.25 * dt * dt * dt * dt * q;
+		Q(a, a + 2) = Q(a + 2, a) = 0.5 * dt * dt * dt * q;
+		Q(a + 2, a + 2) = dt * dt * q;
+	}
+	t.x = F * t.x;
+	t.P = F * t.P * F.transpose() + Q;
+}
+
+void CKalmanTracker::correct(TTrack& t, const mrpt::math::TPoint2D& z) const
+{
+	Eigen::Matrix<double, 2, 4> H = Eigen::Matrix<double, 2, 4>::Zero();
+	H(0, 0) = H(1, 1) = 1;
+	const double r2 = m_options.measurement_noise_m * m_options.measurement_noise_m;
+	const Eigen::Matrix2d S = H * t.P * H.transpose() + r2 * Eigen::Matrix2d::Identity();
+	const Eigen::Matrix<double, 4, 2> K = t.P * H.transpose() * S.inverse();
+	const Eigen::Vector2d innovation(z.x - t.x[0], z.y - t.x[1]);
+	t.x += K * innovation;
+	t.P = (Eigen::Matrix4d::Identity() - K * H) * t.P;
+	const double v = t.speed_mps();  // a leg in swing can look fast; cap at a plausible speed
+	if (v > m_options.max_speed_mps)
+	{
+		t.x[2] *= m_options.max_speed_mps / v;
+		t.x[3] *= m_options.max_speed_mps / v;
+	}
+}
+
+bool CKalmanTracker::inGate(const TTrack& t, const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose) const
+{
+	// Polar coordinates of the prediction and of the observation in the
+	// current sensor frame: eq. 88-89 with the full pose change.
+	const auto p = sensorPose.inverseComposePoint(mrpt::math::TPoint2D(t.x[0], t.x[1]));
+	const auto o = sensorPose.inverseComposePoint(z);
+	const double rp = std::hypot(p.x, p.y), ro = std::hypot(o.x, o.y);
+	const double widen = 1.0 + t.misses;
+	if (std::abs(ro - rp) > m_options.gate_range_m * widen) return false;
+	const double dth = std::abs(mrpt::math::wrapToPi(std::atan2(o.y, o.x) - std::atan2(p.y, p.x)));
+	const double gate = std::max(m_options.gate_bearing_rad, m_options.gate_min_cross_m / std::max(ro, 0.05));
+	return dth <= gate * widen;
+}
+
+void CKalmanTracker::updatePolar(TTrack& t, const mrpt::poses::CPose2D& sensorPose) const
+{
+	const double dx = t.x[0] - sensorPose.x(), dy = t.x[1] - sensorPose.y();
+	t.range_m = std::hypot(dx, dy);
+	t.bearing_rad = mrpt::math::wrapToPi(std::atan2(dy, dx) - sensorPose.phi());
+	if (t.range_m < 1e-9) return;
+	const double ux = dx / t.range_m, uy = dy / t.range_m;
+	t.v_radial_mps = t.x[2] * ux + t.x[3] * uy;
+	t.v_angular_radps = (-t.x[2] * uy + t.x[3] * ux) / t.range_m;
+}
+
+TTrack CKalmanTracker::newTrack(const mrpt::math::TPoint2D& z, double t_s)
+{
+	TTrack t;
+	t.id = m_nextId++;
+	t.x << z.x, z.y, 0, 0;
+	const double r2 = m_options.measurement_noise_m * m_options.measurement_noise_m;
+	const double v2 = 0.25 * m_options.max_speed_mps * m_options.max_speed_mps;
+	t.P = Eigen::Vector4d(r2, r2, v2, v2).asDiagonal();
+	t.t_last_s = t.t_seen_s = t_s;
+	t.hits = 1;
+	t.birth_m = z;
+	return t;
+}
+
+void CKalmanTracker::registerHit(TTrack& t, const mrpt::math::TPoint2D& z, bool evidence) const
+{
+	++t.hits;
+	t.misses = 0;
+	t.free_hits += evidence;
+	t.travel_m = std::max(t.travel_m, std::hypot(z.x - t.birth_m.x, z.y - t.birth_m.y));
+	if (t.travel_m >= m_options.confirm_travel_m && t.hits >= m_options.confirm_hits &&
+		t.free_hits >= m_options.confirm_free_hits)
+		t.state = ETrackState::dynamic;
+	else if (t.state == ETrackState::tentative && t.hits >= m_options.ghost_after_frames)
+		t.state = ETrackState::ghost;
+}
+
+void CKalmanTracker::takeOverFromMemory(double t_s, std::vector<int>& owner)
+{
+	// A younger track (not a ghost) near where a remembered one would be now
+	// is the same object
+	// (the observation jumped out of the old track's gate, e.g. a person seen
+	// by one leg, then by both): it takes over the remembered identity.
+	for (auto m = m_memory.begin(); m != m_memory.end();)
+	{
+		const TTrack& old = m->track;
+		const double dt = std::min(t_s - m->t_lost_s, 1.0);
+		TTrack* heir = nullptr;
+		double bestD = m_options.memory_gate_m;
+		for (auto& t : m_tracks)
+		{
+			if (t.state == ETrackState::ghost || t.id < old.id)
+				continue;
+			const double d = std::min(std::hypot(t.x[0] - old.x[0], t.x[1] - old.x[1]),
+									  std::hypot(t.x[0] - old.x[0] - old.x[2] * dt, t.x[1] - old.x[1] - old.x[3] * dt));
+			if (d <= bestD) bestD = d, heir = &t;
+		}
+		if (!heir)
+		{
+			++m;
+			continue;
+		}
+		std::replace(owner.begin(), owner.end(), heir->id, old.id);
+		heir->id = old.id;
+		if (heir->free_hits >= m_options.confirm_free_hits) heir->state = ETrackState::dynamic;
+		heir->birth_m = old.birth_m;
+		heir->travel_m = std::max(heir->travel_m, old.travel_m);
+		++m_reidentified;
+		m = m_memory.erase(m);
+	}
+}
+
+std::vector<int> CKalmanTracker::update(const std::vector<mrpt::math::TPoint2D>& observations,
+										const mrpt::poses::CPose2D& sensorPose, double t_s,
+										const std::vector<bool>* motionEvidence)
+{
+	// Without evidence from the caller the requirement is waived (thesis rule).
+	const auto evidence = [&](size_t oi) { return !motionEvidence || (*motionEvidence)[oi]; };
+	for (auto& t : m_tracks) predict(t, t_s);
+
+	// Greedy one-to-one association, nearest (predicted, observed) pairs first.
+	std::vector<std::tuple<double, size_t, size_t>> pairs;  // distance, track, observation
+	for (size_t ti = 0; ti < m_tracks.size(); ++ti)
+		for (size_t oi = 0; oi < observations.size(); ++oi)
+			if (inGate(m_tracks[ti], observations[oi], sensorPose))
+				pairs.emplace_back(std::hypot(observations[oi].x - m_tracks[ti].x[0],
+											  observations[oi].y - m_tracks[ti].x[1]),
+								   ti, oi);
+	std::sort(pairs.begin(), pairs.end());
+	std::vector<int> owner(observations.size(), -1);
+	std::vector<bool> trackUsed(m_tracks.size(), false);
+	for (auto& t : m_tracks) t.observation = -1;
+	for (const auto& [d, ti, oi] : pairs)
+	{
+		if (trackUsed[ti] || owner[oi] >= 0) continue;
+		trackUsed[ti] = true;
+		TTrack& t = m_tracks[ti];
+		owner[oi] = t.id;
+		t.observation = static_cast<int>(oi);
+		t.t_seen_s = t_s;
+		correct(t, observations[oi]);
+		registerHit(t, observations[oi], evidence(oi));
+	}
+
+	// Missed tracks: null counter; dropped after max_misses (dynamic ones are remembered).
+	std::vector<TTrack> kept;
+	for (size_t ti = 0; ti < m_tracks.size(); ++ti)
+	{
+		TTrack& t = m_tracks[ti];
+		if (!trackUsed[ti] && ++t.misses >= m_options.max_misses)
+		{
+			if (t.state == ETrackState::dynamic) m_memory.push_back({t, t.t_seen_s});
+			continue;
+		}
+		kept.push_back(t);
+	}
+	m_tracks.swap(kept);
+	takeOverFromMemory(t_s, owner);
+	m_memory.erase(std::remove_if(m_memory.begin(), m_memory.end(),
+								  [&](const TMemory& m) { return t_s - m.t_lost_s > m_options.memory_s; }),
+				   m_memory.end());
+
+	// New tracks, or re-identified remembered ones.
+	for (size_t oi = 0; oi < observations.size(); ++oi)
+	{
+		if (owner[oi] >= 0) continue;
+		const auto& z = observations[oi];
+		auto best = m_memory.end();
+		double bestD = m_options.memory_gate_m;
+		for (auto m = m_memory.begin(); m != m_memory.end(); ++m)
+		{
+			const TTrack& old = m->track;
+			const double dt = std::min(t_s - m->t_lost_s, 1.0);  // extrapolate at most 1 s
+			const double dLast = std::hypot(z.x - old.x[0], z.y - old.x[1]);
+			const double dCv = std::hypot(z.x - old.x[0] - old.x[2] * dt, z.y - old.x[1] - old.x[3] * dt);
+			const double d = std::min(dLast, dCv);
+			if (d <= bestD)
+			{
+				bestD = d;
+				best = m;
+			}
+		}
+		TTrack t = newTrack(z, t_s);
+		t.free_hits = evidence(oi);
+		if (best != m_memory.end())
+		{
+			--m_nextId;  // the remembered id is reused
+			t.id = best->track.id;
+			// Identity comes back at once; the dynamic state only with fresh
+			// motion evidence (else clutter near a lost person would inherit it).
+			t.state = (!motionEvidence || evidence(oi)) ? ETrackState::dynamic : ETrackState::tentative;
+			t.birth_m = best->track.birth_m;
+			t.travel_m = best->track.travel_m;
+			t.hits = best->track.hits + 1;
+			t.free_hits = best->track.free_hits + evidence(oi);
+			m_memory.erase(best);
+			++m_reidentified;
+		}
+		owner[oi] = t.id;
+		t.observation = static_cast<int>(oi);
+		m_tracks.push_back(t);
+	}
+	for (auto& t : m_tracks) updatePolar(t, sensorPose);
+	return owner;
+}
+
+}  // namespace hslam::dynamic

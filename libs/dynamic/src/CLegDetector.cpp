@@ -1,0 +1,198 @@
+#include <hslam/dynamic/CLegDetector.h>
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace hslam::dynamic
+{
+namespace
+{
+struct TBeam
+{
+	bool valid = false;
+	double r = 0, x = 0, y = 0;
+};
+
+/** Beam end points in the robot frame (sensor offset and yaw applied). */
+std::vector<TBeam> beamsOf(const mrpt::obs::CObservation2DRangeScan& scan)
+{
+	std::vector<TBeam> beams(scan.getScanSize());
+	const double sx = scan.sensorPose.x(), sy = scan.sensorPose.y();
+	for (size_t i = 0; i < beams.size(); ++i)
+	{
+		const double r = scan.getScanRange(i);
+		if (!scan.getScanRangeValidity(i) || !std::isfinite(r) || r <= 0) continue;
+		const double a = beamBearing(scan, i);
+		beams[i] = {true, r, sx + r * std::cos(a), sy + r * std::sin(a)};
+	}
+	return beams;
+}
+
+/** True if the beam beside the segment end `edge` is farther by `jump` or empty. */
+bool standsInFront(const std::vector<TBeam>& beams, size_t edge, long outside, double jump)
+{
+	if (outside < 0 || outside >= static_cast<long>(beams.size())) return true;
+	const TBeam& o = beams[static_cast<size_t>(outside)];
+	return !o.valid || o.r >= beams[edge].r + jump;
+}
+
+/** True if the segment end `edge` continues into the neighbour beam (the
+ * segment was cut by the length limit, not ended by a jump or a gap). */
+bool isCut(const std::vector<TBeam>& beams, size_t edge, long outside, double maxJump)
+{
+	if (outside < 0 || outside >= static_cast<long>(beams.size())) return false;
+	const TBeam& o = beams[static_cast<size_t>(outside)];
+	return o.valid && std::abs(o.r - beams[edge].r) < maxJump;
+}
+
+TLegSegment describe(const std::vector<TBeam>& beams, size_t first, size_t last, double sx, double sy)
+{
+	TLegSegment s;
+	s.first_beam = first;
+	s.last_beam = last;
+	for (size_t i = first; i <= last; ++i)
+	{
+		s.x_m += beams[i].x;
+		s.y_m += beams[i].y;
+	}
+	const double n = static_cast<double>(last - first + 1);
+	s.x_m /= n;
+	s.y_m /= n;
+	s.range_m = std::hypot(s.x_m - sx, s.y_m - sy);
+	s.bearing_rad = std::atan2(s.y_m - sy, s.x_m - sx);
+	const TBeam &a = beams[first], &b = beams[last];
+	s.width_m = std::hypot(b.x - a.x, b.y - a.y);
+	// Depth: largest distance of a point in front of the chord (towards the
+	// sensor at the origin). Signed distance with the sensor side positive.
+	if (s.width_m > 1e-9)
+	{
+		double nx = -(b.y - a.y) / s.width_m, ny = (b.x - a.x) / s.width_m;
+		if (nx * (sx - a.x) + ny * (sy - a.y) < 0)
+		{
+			nx = -nx;
+			ny = -ny;
+		}
+		for (size_t i = first; i <= last; ++i)
+			s.depth_m = std::max(s.depth_m, nx * (beams[i].x - a.x) + ny * (beams[i].y - a.y));
+	}
+	return s;
+}
+}  // namespace
+
+const char* toString(ELegReject r)
+{
+	switch (r)
+	{
+		case ELegReject::accepted: return "accepted";
+		case ELegReject::too_few_beams: return "too_few_beams";
+		case ELegReject::no_dip_edge: return "no_dip_edge";
+		case ELegReject::width: return "width";
+		case ELegReject::depth: return "depth";
+		case ELegReject::cut_by_length: return "cut_by_length";
+	}
+	return "?";
+}
+
+double angularStep(const mrpt::obs::CObservation2DRangeScan& scan)
+{
+	const size_t n = scan.getScanSize();
+	return n > 1 ? scan.aperture / static_cast<double>(n - 1) : scan.aperture;
+}
+
+double beamBearing(const mrpt::obs::CObservation2DRangeScan& scan, size_t i)
+{
+	// MRPT: beams evenly spread over the aperture, centred on the sensor x axis,
+	// then rotated by the sensor yaw (sensorPose; used by the legs dataset to
+	// represent asymmetric scans).
+	const double step = angularStep(scan);
+	const double local = scan.rightToLeft ? -0.5 * scan.aperture + step * static_cast<double>(i)
+										  : 0.5 * scan.aperture - step * static_cast<double>(i);
+	return local + scan.sensorPose.yaw();
+}
+
+CLegDetector::CLegDetector(const TOptions& options) : m_options(options)
+{
+	std::istringstream in(options.find_interv_bands_m);
+	double v;
+	while (in >> v)
+	{
+		if (!(v > 0) || (!m_bandLimits_m.empty() && v <= m_bandLimits_m.back()))
+			throw std::invalid_argument("find_interv_bands_m = '" + options.find_interv_bands_m +
+										"': needs increasing positive ranges (m)");
+		m_bandLimits_m.push_back(v);
+	}
+	if (!in.eof())
+		throw std::invalid_argument("find_interv_bands_m = '" + options.find_interv_bands_m +
+									"': not a list of numbers");
+	while (!m_bandLimits_m.empty() && m_bandLimits_m.back() >= options.max_range_m) m_bandLimits_m.pop_back();
+	m_bandLimits_m.push_back(options.max_range_m);
+}
+
+int CLegDetector::findInterv(double range_m, double angularStep_rad) const
+{
+	// The far limit of the band holding range_m; beyond max_range_m the range itself.
+	double bandEnd = range_m;
+	for (double limit : m_bandLimits_m)
+		if (range_m < limit)
+		{
+			bandEnd = limit;
+			break;
+		}
+	const double beams = m_options.leg_width_m / (bandEnd * angularStep_rad);
+	return std::max(m_options.min_beams, static_cast<int>(std::floor(beams + 1e-9)));
+}
+
+std::vector<TSegmentCandidate> CLegDetector::candidates(const mrpt::obs::CObservation2DRangeScan& scan) const
+{
+	const auto beams = beamsOf(scan);
+	const double step = angularStep(scan);
+	const auto& o = m_options;
+	std::vector<TSegmentCandidate> out;
+	size_t i = 0;
+	while (i < beams.size())
+	{
+		if (!beams[i].valid || beams[i].r > o.max_range_m)
+		{
+			++i;
+			continue;
+		}
+		size_t last = i;
+		while (last + 1 < beams.size())
+		{
+			const TBeam& next = beams[last + 1];
+			if (!next.valid || std::abs(next.r - beams[last].r) >= o.max_range_jump_m ||
+				std::hypot(next.x - beams[i].x, next.y - beams[i].y) >= o.max_segment_length_m)
+				break;
+			++last;
+		}
+		TSegmentCandidate c;
+		c.segment = describe(beams, i, last, scan.sensorPose.x(), scan.sensorPose.y());
+		const int edges = static_cast<int>(standsInFront(beams, i, static_cast<long>(i) - 1, o.edge_jump_m)) +
+						  static_cast<int>(standsInFront(beams, last, static_cast<long>(last) + 1, o.edge_jump_m));
+		if (static_cast<int>(c.segment.beams()) < findInterv(beams[i].r, step))
+			c.verdict = ELegReject::too_few_beams;
+		else if (edges < o.min_dip_edges)
+			c.verdict = ELegReject::no_dip_edge;
+		else if (c.segment.width_m < o.min_width_m || c.segment.width_m > o.max_width_m)
+			c.verdict = ELegReject::width;
+		else if (c.segment.depth_m < o.min_depth_m || c.segment.depth_m > o.max_depth_m)
+			c.verdict = ELegReject::depth;
+		else if (o.require_isolated && (isCut(beams, i, static_cast<long>(i) - 1, o.max_range_jump_m) ||
+										isCut(beams, last, static_cast<long>(last) + 1, o.max_range_jump_m)))
+			c.verdict = ELegReject::cut_by_length;
+		out.push_back(c);
+		i = last + 1;
+	}
+	return out;
+}
+
+std::vector<TLegSegment> CLegDetector::detect(const mrpt::obs::CObservation2DRangeScan& scan) const
+{
+	std::vector<TLegSegment> legs;
+	for (const auto& c : candidates(scan))
+		if (c.verdict == ELegReject::accepted) legs.push_back(c.segment);
+	return legs;
+}
+
+}  // namespace hslam::dynamic

@@ -1,0 +1,163 @@
+#include "dynamic_test_utils.h"
+
+#include <gtest/gtest.h>
+#include <hslam/dynamic/CDynamicObjectFilter.h>
+#include <hslam/dynamic/CKalmanTracker.h>
+
+using namespace hslam::dynamic;
+using namespace hslam::dynamic::testutils;
+using mrpt::math::TPoint2D;
+using mrpt::poses::CPose2D;
+
+TEST(KalmanTracker, LifeCycleConfirmMissDropReidentify)
+{
+	CKalmanTracker tracker;  // thesis: dropped after 3 missed frames
+	const double dt = 0.1, v = 1.0;  // a person walking at 1 m/s along x
+	const CPose2D sensor;
+	int id = -1;
+	double t = 0;
+	for (int k = 0; k < 5; ++k, t += dt)
+	{
+		const auto owner = tracker.update({TPoint2D(1.0 + v * t, 1.0)}, sensor, t);
+		if (k == 0) id = owner[0];
+		EXPECT_EQ(owner[0], id) << "frame " << k;
+	}
+	const TTrack* track = tracker.find(id);
+	ASSERT_TRUE(track);
+	EXPECT_EQ(track->state, ETrackState::dynamic);  // moved 0.4 m > confirm_travel_m
+	EXPECT_NEAR(track->x[2], v, 0.15);
+	EXPECT_NEAR(track->x[3], 0.0, 0.1);
+
+	// Missed twice: still alive (predicted ahead); the third miss drops it.
+	tracker.update({}, sensor, t), t += dt;
+	tracker.update({}, sensor, t), t += dt;
+	ASSERT_TRUE(tracker.find(id));
+	EXPECT_NEAR(tracker.find(id)->x[0], 1.0 + v * (t - dt), 0.15);
+	tracker.update({}, sensor, t), t += dt;
+	EXPECT_FALSE(tracker.find(id));
+
+	// Reappears 0.5 s later where it would be: same id, still dynamic.
+	t += 0.5;
+	const auto owner = tracker.update({TPoint2D(1.0 + v * t, 1.0)}, sensor, t);
+	EXPECT_EQ(owner[0], id);
+	EXPECT_EQ(tracker.reidentifications(), 1u);
+	ASSERT_TRUE(tracker.find(id));
+	EXPECT_EQ(tracker.find(id)->state, ETrackState::dynamic);
+
+	// Lost again, back after the memory (2 s): a new identity.
+	for (int k = 0; k < 3; ++k) tracker.update({}, sensor, t += dt);
+	t += 3.0;
+	const auto later = tracker.update({TPoint2D(1.0 + v * t, 1.0)}, sensor, t);
+	EXPECT_NE(later[0], id);
+	EXPECT_EQ(tracker.createdTracks(), 2);
+}
+
+TEST(KalmanTracker, TrackBornOutOfGateTakesOverTheDroppedIdentity)
+{
+	// A person confirmed walking along x; the observation then jumps 0.6 m
+	// sideways (13 deg at 2.5 m, outside the 10 deg gate): a new tentative
+	// track is born, and when the old one is dropped it takes over its id.
+	CKalmanTracker tracker;
+	const CPose2D sensor;
+	double t = 0;
+	int id = -1;
+	for (int k = 0; k < 5; ++k, t += 0.1) id = tracker.update({TPoint2D(2.0 + t, 0.0)}, sensor, t)[0];
+	ASSERT_EQ(tracker.find(id)->state, ETrackState::dynamic);
+	std::vector<int> owner;
+	for (int k = 0; k < 3; ++k, t += 0.1) owner = tracker.update({TPoint2D(2.0 + t, 0.6)}, sensor, t);
+	EXPECT_EQ(owner[0], id);
+	EXPECT_EQ(tracker.tracks().size(), 1u);
+	EXPECT_EQ(tracker.reidentifications(), 1u);
+	EXPECT_EQ(tracker.find(id)->state, ETrackState::dynamic);
+}
+
+TEST(KalmanTracker, StaticObjectBecomesGhostAndNeverDynamic)
+{
+	CKalmanTracker tracker;
+	const CPose2D sensor;
+	std::vector<int> owner;
+	for (int k = 0; k < 8; ++k)  // 1 cm jitter, like a wall piece under noise
+		owner = tracker.update({TPoint2D(2.0 + 0.01 * (k % 2), -0.5)}, sensor, 0.1 * k);
+	ASSERT_TRUE(tracker.find(owner[0]));
+	EXPECT_EQ(tracker.find(owner[0])->state, ETrackState::ghost);
+	EXPECT_LT(tracker.find(owner[0])->speed_mps(), 0.1);
+}
+
+TEST(KalmanTracker, MotionEvidenceIsRequiredWhenGiven)
+{
+	CKalmanTracker tracker;
+	const CPose2D sensor;
+	const std::vector<bool> none = {false}, free = {true};
+	std::vector<int> owner;
+	for (int k = 0; k < 6; ++k) owner = tracker.update({TPoint2D(1.0 + 0.1 * k, 0.0)}, sensor, 0.1 * k, &none);
+	ASSERT_TRUE(tracker.find(owner[0]));
+	EXPECT_NE(tracker.find(owner[0])->state, ETrackState::dynamic);  // "moves" but never into free space
+	owner = tracker.update({TPoint2D(1.6, 0.0)}, sensor, 0.6, &free);
+	EXPECT_EQ(tracker.find(owner[0])->state, ETrackState::dynamic);
+}
+
+namespace
+{
+/** Runs the whole filter on scans cast from a robot driving forward and
+ * turning; returns the leg track nearest the given world point. */
+struct TRun
+{
+	TTrack nearest;
+	double rawRangeRate_mps = 0;  //!< range change seen by the sensor (not compensated)
+	size_t dynamicBeams = 0;
+};
+
+TRun driveBy(const std::function<TCircle(double)>& legAt, double speed_mps, double turn_radps)
+{
+	CDynamicObjectFilter filter;
+	CPose2D robot(-1.0, -0.5, 0.0);
+	const double dt = 0.1;
+	TRun run;
+	double firstRange = 0, lastRange = 0;
+	const int frames = 15;
+	for (int k = 0; k < frames; ++k)
+	{
+		const double t = k * dt;
+		const TCircle leg = legAt(t);
+		const auto scan = castScan(robot, {leg}, room(5.0), 361, M_PI);
+		const auto& frame = filter.process(scan, robot, t);
+		run.dynamicBeams += frame.dynamicBeams();
+		const double range = std::hypot(leg.x - robot.x(), leg.y - robot.y());
+		if (k == 0) firstRange = range;
+		lastRange = range;
+		robot = robot + CPose2D(speed_mps * dt, 0, turn_radps * dt);
+	}
+	run.rawRangeRate_mps = (lastRange - firstRange) / ((frames - 1) * dt);
+	const TCircle end = legAt((frames - 1) * dt);
+	double best = 1e9;
+	for (const auto& t : filter.lastFrame().leg_tracks)
+	{
+		const double d = std::hypot(t.x[0] - end.x, t.x[1] - end.y);
+		if (d < best) best = d, run.nearest = t;
+	}
+	return run;
+}
+}  // namespace
+
+TEST(DynamicObjectFilter, StaticLegSeenFromMovingRobotHasZeroVelocity)
+{
+	// Robot at 0.5 m/s turning at 0.3 rad/s; a static leg-sized post at (1, 0.3):
+	// the sensor sees its range shrink at ~0.4 m/s, the compensated track does not move.
+	const auto run = driveBy([](double) { return TCircle{1.0, 0.3, 0.09}; }, 0.5, 0.3);
+	EXPECT_LT(run.rawRangeRate_mps, -0.3);
+	EXPECT_LT(run.nearest.speed_mps(), 0.05);
+	EXPECT_LT(std::abs(run.nearest.v_radial_mps), 0.05);
+	EXPECT_LT(std::abs(run.nearest.v_angular_radps), 0.05);
+	EXPECT_EQ(run.nearest.state, ETrackState::ghost);  // removed from the dynamic list
+	EXPECT_EQ(run.dynamicBeams, 0u);  // nothing excluded from the map
+}
+
+TEST(DynamicObjectFilter, WalkingLegSeenFromMovingRobotGetsItsOwnVelocity)
+{
+	// The same robot motion; a leg walking at 0.8 m/s along +y.
+	const auto run = driveBy([](double t) { return TCircle{1.2, -0.6 + 0.8 * t, 0.09}; }, 0.5, 0.3);
+	EXPECT_NEAR(run.nearest.x[2], 0.0, 0.15);
+	EXPECT_NEAR(run.nearest.x[3], 0.8, 0.15);
+	EXPECT_EQ(run.nearest.state, ETrackState::dynamic);
+	EXPECT_GT(run.dynamicBeams, 50u);
+}
