@@ -26,7 +26,11 @@ void CArcosOdometry::update(const arcos::TSip& sip)
 	{
 		const int dx = unwrapDelta15(sip.xpos_raw, m_prevX);
 		const int dy = unwrapDelta15(sip.ypos_raw, m_prevY);
-		const double dth = mrpt::math::wrapToPi((sip.thpos_raw - m_prevTh) * m_conv.angle_rad_per_unit);
+		// Heading counts 4096 units per turn: unwrap in units, then convert.
+		int dthUnits = sip.thpos_raw - m_prevTh;
+		if (dthUnits > 2048) dthUnits -= 4096;
+		if (dthUnits < -2048) dthUnits += 4096;
+		const double dth = dthUnits * m_conv.angle_rad_per_unit;
 		m_pose.x(m_pose.x() + dx * m_conv.dist_mm_per_unit * mm2m);
 		m_pose.y(m_pose.y() + dy * m_conv.dist_mm_per_unit * mm2m);
 		m_pose.phi(mrpt::math::wrapToPi(m_pose.phi() + dth));

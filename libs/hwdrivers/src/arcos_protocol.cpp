@@ -99,6 +99,19 @@ void CArcosPacketParser::compact()
 	m_pos = 0;
 }
 
+bool CArcosPacketParser::validPacketAfter(size_t from) const
+{
+	for (size_t q = from; q + 2 < m_buf.size(); ++q)
+	{
+		if (m_buf[q] != HEADER0 || m_buf[q + 1] != HEADER1) continue;
+		const size_t n = m_buf[q + 2];
+		if (n < 3 || n + 3 > MAX_PACKET_BYTES || m_buf.size() - q < n + 3) continue;
+		const uint16_t received = static_cast<uint16_t>((m_buf[q + 1 + n] << 8) | m_buf[q + 2 + n]);
+		if (checksum(&m_buf[q + 3], n - 2) == received) return true;
+	}
+	return false;
+}
+
 bool CArcosPacketParser::next(std::vector<uint8_t>& payload)
 {
 	for (;;)
@@ -126,7 +139,17 @@ bool CArcosPacketParser::next(std::vector<uint8_t>& payload)
 			m_pos = p + 1;
 			continue;
 		}
-		if (m_buf.size() - p < n + 3) return false;  // incomplete, wait
+		if (m_buf.size() - p < n + 3)
+		{
+			// Incomplete. If a complete valid packet starts at a later header,
+			// this one was truncated (device reset, lost bytes): drop it now
+			// instead of waiting for bytes that belong to the next packets.
+			if (!validPacketAfter(p + 1)) return false;
+			++m_stats.badChecksums;
+			m_stats.garbageBytes += 1;
+			m_pos = p + 1;
+			continue;
+		}
 		const uint8_t* body = &m_buf[p + 3];
 		const size_t bodyLen = n - 2;
 		const uint16_t received = static_cast<uint16_t>((m_buf[p + 1 + n] << 8) | m_buf[p + 2 + n]);

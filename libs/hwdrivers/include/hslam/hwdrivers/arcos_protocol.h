@@ -120,6 +120,8 @@ class CArcosPacketParser
 
    private:
 	void compact();
+	/** True if a complete packet with a valid checksum starts at or after `from`. */
+	bool validPacketAfter(size_t from) const;
 
 	std::vector<uint8_t> m_buf;
 	size_t m_pos = 0;  //!< first unconsumed byte
