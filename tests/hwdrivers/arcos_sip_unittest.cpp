@@ -99,8 +99,8 @@ TEST(ArcosOdometry, VelocitiesFromWheelsAndRotvel)
 	CArcosOdometry old;
 	old.update(*decodeSip(handBuiltSip(false)));
 	EXPECT_NEAR(old.velocityLocal().omega, 0.5 * 400 * 0.0056, 1e-12);  // (vr - vl)/2 * DiffConv
-	// Initial pose = the SIP's own counters.
-	EXPECT_NEAR(odo.pose().x(), 32.752, 1e-9);
+	// Initial pose = the SIP's own counters, read as signed 15-bit values.
+	EXPECT_NEAR(odo.pose().x(), -0.016, 1e-9);
 	EXPECT_NEAR(odo.pose().phi(), -100 * 0.001534, 1e-9);
 }
 
@@ -111,15 +111,24 @@ TEST(ArcosOdometry, PositionCountersWrapAround)
 	EXPECT_EQ(CArcosOdometry::unwrapDelta15(500, 400), 100);
 
 	CArcosOdometry odo;
-	odo.update(sipAt(32700, 0, 0));
-	odo.update(sipAt(32700 + 136, 0, 0));  // crosses 32767 -> 68
-	EXPECT_NEAR(odo.pose().x(), 32.836, 1e-9);
+	odo.update(sipAt(16300, 0, 0));  // first SIP without SETO: signed 15-bit
+	EXPECT_NEAR(odo.pose().x(), 16.3, 1e-9);
+	odo.reset();
+	odo.update(sipAt(-16300, 0, 0));
+	EXPECT_NEAR(odo.pose().x(), -16.3, 1e-9);
+	odo.resetToOrigin();
+	int x = 0;
 	// Drive 70 m forward in 100 mm steps: the counter wraps twice, no jump.
-	int x = 32700 + 136;
 	for (int k = 0; k < 700; ++k) odo.update(sipAt(x += 100, 0, 0));
-	EXPECT_NEAR(odo.pose().x(), 32.836 + 70.0, 1e-6);
+	EXPECT_NEAR(odo.pose().x(), 70.0, 1e-6);
+	// Backwards from the origin: 0 -> -20 mm is raw 32748.
+	odo.resetToOrigin();
+	odo.update(sipAt(-20, 0, 0));
+	EXPECT_NEAR(odo.pose().x(), -0.020, 1e-9);
+	odo.update(sipAt(-20 + 136, 0, 0));
+	EXPECT_NEAR(odo.pose().x(), 0.116, 1e-9);
 	// Negative y: 0 -> -1 mm is raw 32767.
-	odo.update(sipAt(x, -1, 0));
+	odo.update(sipAt(-20 + 136, -1, 0));
 	EXPECT_NEAR(odo.pose().y(), -0.001, 1e-9);
 }
 

@@ -12,13 +12,21 @@ int CArcosOdometry::unwrapDelta15(int current, int previous)
 	return d;
 }
 
+void CArcosOdometry::resetToOrigin()
+{
+	m_initialised = true;
+	m_prevX = m_prevY = m_prevTh = 0;
+	m_pose = mrpt::poses::CPose2D();
+}
+
 void CArcosOdometry::update(const arcos::TSip& sip)
 {
 	const double mm2m = 1e-3;
 	if (!m_initialised)
 	{
-		m_pose = mrpt::poses::CPose2D(sip.xpos_raw * m_conv.dist_mm_per_unit * mm2m,
-									  sip.ypos_raw * m_conv.dist_mm_per_unit * mm2m,
+		const auto signed15 = [](int raw) { return raw >= 0x4000 ? raw - 0x8000 : raw; };
+		m_pose = mrpt::poses::CPose2D(signed15(sip.xpos_raw) * m_conv.dist_mm_per_unit * mm2m,
+									  signed15(sip.ypos_raw) * m_conv.dist_mm_per_unit * mm2m,
 									  mrpt::math::wrapToPi(sip.thpos_raw * m_conv.angle_rad_per_unit));
 		m_initialised = true;
 	}

@@ -112,7 +112,7 @@ bool CPioneerDriver::connect()
 		if (m_opts.reset_odometry && !m_odometryResetDone)
 		{
 			send(encodeCommand(CMD_SETO));
-			m_odometry.reset();
+			m_odometry.resetToOrigin();
 			m_odometryResetDone = true;
 		}
 		m_sentV = m_sentW = 1e9;

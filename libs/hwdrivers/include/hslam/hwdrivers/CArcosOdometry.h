@@ -47,8 +47,13 @@ class CArcosOdometry
 	/** Forgets the previous SIP: the next one re-initialises the pose. */
 	void reset() { m_initialised = false; }
 
+	/** The robot's counters were just zeroed (SETO): start at (0, 0, 0) with
+	 * previous raw counters 0, so the first SIP is already an increment. */
+	void resetToOrigin();
+
 	/** Integrates one SIP. The first SIP after reset() sets the pose to the
-	 * SIP's own (x, y, th). */
+	 * SIP's own (x, y, th), reading the 15-bit counters as signed
+	 * (-16.384 m .. +16.383 m), the only unambiguous choice without SETO. */
 	void update(const arcos::TSip& sip);
 
 	/** Accumulated pose (x, y in m, phi in (-pi, pi]). */

@@ -72,7 +72,7 @@ class CPioneerDriver
 		double command_timeout_s = 0.6;
 		double silence_timeout_s = 1.0;
 		double reconnect_period_s = 0.5;
-		double handshake_timeout_s = 1.0;
+		double handshake_timeout_s = 0.3;  //!< per SYNC step (3 steps, up to 3 tries)
 		bool enable_motors = true;
 		bool enable_sonar = true;
 		bool reset_odometry = true;
