@@ -1,0 +1,138 @@
+/* hslam-device-emulator: a Pioneer P3-DX (ARCOS, on a pseudo-terminal and/or a
+ * loopback TCP port) and a SICK LMS200 (serial telegrams on a pseudo-terminal)
+ * sharing one world, so MRPT's rawlog-grabber (with our plug-in) or
+ * hslam-grabber can record without hardware. The robot moves as the client
+ * commands (differential drive); sonars and laser see the world: a simulator
+ * scene (libs/sim, --scene) or a rectangular room (--box).
+ * Runs until SIGINT/SIGTERM or --duration; --truth writes the true pose (TUM). */
+#include <hslam/common/tum_trajectory.h>
+#include <hslam/hwdrivers/CArcosEmulator.h>
+#include <hslam/hwdrivers/CLms200Emulator.h>
+#include <hslam/sim/scene.h>
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/system/datetime.h>
+
+#include <atomic>
+#include <csignal>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+using namespace hslam::hwdrivers;
+
+namespace
+{
+std::atomic<bool> g_stop{false};
+void onSignal(int) { g_stop = true; }
+
+/** The simulator's world (exact ray casting of walls, furniture, raster) as an
+ * emulator world. People are not animated here (static scene). */
+class CSimWorldAdapter : public CEmulatorWorld
+{
+   public:
+	explicit CSimWorldAdapter(hslam::sim::CWorld world) : m_world(std::move(world)) {}
+	double rayRange_m(double x, double y, double a, double maxRange_m) const override
+	{
+		const auto hit = m_world.castRay({x, y}, a, maxRange_m, false);
+		return hit.hit ? hit.range_m : maxRange_m;
+	}
+
+   private:
+	hslam::sim::CWorld m_world;
+};
+
+std::vector<double> numbers(const std::string& text, size_t n, const std::string& what)
+{
+	std::istringstream is(text);
+	std::vector<double> v(n);
+	for (auto& x : v)
+		if (!(is >> x)) throw std::runtime_error(what + " = '" + text + "': expected " + std::to_string(n) + " numbers");
+	return v;
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+	try
+	{
+		TCLAP::CmdLine cmd("hslam-device-emulator: Pioneer ARCOS + SICK LMS200 emulators on pseudo-terminals/TCP", ' ', "1.0");
+		TCLAP::ValueArg<std::string> scene("", "scene", "simulator scene file (config_ini/sim-worlds/*.scene)", false, "", "file", cmd);
+		TCLAP::ValueArg<std::string> box("", "box", "rectangular room 'xmin ymin xmax ymax' (m) if no --scene", false, "-2 -3 6 3", "text", cmd);
+		TCLAP::ValueArg<std::string> start("", "start", "true start pose 'x_m y_m yaw_deg'", false, "0 0 0", "text", cmd);
+		TCLAP::ValueArg<std::string> pioneerPty("", "pioneer-pty", "symlink for the Pioneer's pseudo-terminal ('' = none)", false, "", "path", cmd);
+		TCLAP::ValueArg<int> pioneerTcp("", "pioneer-tcp", "loopback TCP port for the Pioneer (-1 = none, 0 = any)", false, -1, "port", cmd);
+		TCLAP::ValueArg<std::string> lmsPty("", "lms200-pty", "symlink for the LMS200's pseudo-terminal ('' = none)", false, "", "path", cmd);
+		TCLAP::ValueArg<double> lmsRate("", "lms200-rate", "laser scans per second", false, 10.0, "Hz", cmd);
+		TCLAP::ValueArg<double> sipPeriod("", "sip-period", "SIP period (s), ARCOS default 0.1", false, 0.1, "s", cmd);
+		TCLAP::ValueArg<double> badCk("", "bad-checksum-rate", "fraction of SIPs sent with a bad checksum", false, 0, "0..1", cmd);
+		TCLAP::ValueArg<double> partial("", "partial-rate", "fraction of SIPs truncated", false, 0, "0..1", cmd);
+		TCLAP::ValueArg<double> garbage("", "garbage-rate", "fraction of SIPs preceded by garbage bytes", false, 0, "0..1", cmd);
+		TCLAP::ValueArg<double> duration("", "duration", "stop after this many seconds (0 = on SIGINT/SIGTERM)", false, 0, "s", cmd);
+		TCLAP::ValueArg<std::string> truth("", "truth", "write the true robot pose at 20 Hz to this TUM file at exit", false, "", "file", cmd);
+		if (!cmd.parse(argc, argv)) return 0;
+
+		std::shared_ptr<CEmulatorWorld> world;
+		if (!scene.getValue().empty())
+			world = std::make_shared<CSimWorldAdapter>(hslam::sim::loadSceneFile(scene.getValue()).world);
+		else
+		{
+			const auto b = numbers(box.getValue(), 4, "--box");
+			world = std::make_shared<CBoxWorld>(CBoxWorld::TBox{b[0], b[1], b[2], b[3]});
+		}
+		const auto s = numbers(start.getValue(), 3, "--start");
+
+		CArcosEmulator::TOptions eo;
+		eo.use_pty = !pioneerPty.getValue().empty();
+		eo.pty_link = pioneerPty.getValue();
+		eo.tcp_port = pioneerTcp.getValue();
+		eo.sip_period_s = sipPeriod.getValue();
+		eo.bad_checksum_rate = badCk.getValue();
+		eo.partial_rate = partial.getValue();
+		eo.garbage_rate = garbage.getValue();
+		eo.start_pose = mrpt::poses::CPose2D(s[0], s[1], s[2] * M_PI / 180.0);
+		CArcosEmulator pioneer(eo, world);
+		pioneer.start();
+
+		std::unique_ptr<CLms200Emulator> lms;
+		if (!lmsPty.getValue().empty())
+		{
+			CLms200Emulator::TOptions lo;
+			lo.pty_link = lmsPty.getValue();
+			lo.scan_rate_hz = lmsRate.getValue();
+			lms = std::make_unique<CLms200Emulator>(lo, world, [&pioneer] { return pioneer.truePose(); });
+			lms->start();
+		}
+		std::signal(SIGINT, onSignal);
+		std::signal(SIGTERM, onSignal);
+		std::cout << "ready";
+		if (eo.use_pty) std::cout << " pioneer_pty=" << pioneer.ptyPath();
+		if (eo.tcp_port >= 0) std::cout << " pioneer_tcp=" << pioneer.tcpPort();
+		if (lms) std::cout << " lms200_pty=" << lms->ptyPath();
+		std::cout << std::endl;
+
+		hslam::common::TTrajectory2D traj;
+		const auto t0 = std::chrono::steady_clock::now();
+		while (!g_stop)
+		{
+			std::this_thread::sleep_for(std::chrono::milliseconds(50));
+			if (!truth.getValue().empty())
+				traj.push_back({mrpt::Clock::toDouble(mrpt::Clock::now()), pioneer.truePose().asTPose()});
+			if (duration.getValue() > 0 &&
+				std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > duration.getValue())
+				break;
+		}
+		if (lms) lms->stop();
+		pioneer.stop();
+		if (!truth.getValue().empty()) hslam::common::writeTumFile(truth.getValue(), traj);
+		const auto st = pioneer.stats();
+		std::cout << "pioneer: sips=" << st.sipsSent << " commands=" << st.commands << " handshakes=" << st.handshakes
+				  << " watchdog_stops=" << st.watchdogStops << " faults=" << st.faultsInjected << "\n";
+		if (lms) std::cout << "lms200: scans=" << lms->scansSent() << " commands=" << lms->commandsReceived() << "\n";
+		return 0;
+	}
+	catch (const std::exception& e)
+	{
+		std::cerr << "hslam-device-emulator: " << e.what() << "\n";
+		return 1;
+	}
+}
