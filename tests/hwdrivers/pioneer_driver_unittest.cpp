@@ -45,6 +45,18 @@ struct TRig
 		drv = std::make_unique<CPioneerDriver>(dopts);
 	}
 
+	/** Spins until pred() holds (true) or timeout_s passes (false). */
+	bool spinUntil(const std::function<bool()>& pred, double timeout_s)
+	{
+		const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+		while (std::chrono::steady_clock::now() < end)
+		{
+			if (pred()) return true;
+			drv->spinOnce(0.02);
+		}
+		return pred();
+	}
+
 	/** Spins the driver for `seconds`, calling cmd() before every spin if given. */
 	std::vector<TPioneerState> spin(double seconds, const std::function<void()>& cmd = {})
 	{
@@ -171,11 +183,11 @@ TEST(PioneerDriver, SurvivesBadChecksumsPartialPacketsAndGarbage)
 {
 	TRig rig(false);
 	ASSERT_TRUE(rig.drv->connect());
-	rig.spin(0.3);
+	rig.spin(0.2);
 	rig.emu->corruptNextSips(3);
-	rig.spin(0.5);
+	rig.spin(0.4);
 	rig.emu->truncateNextSips(3);
-	rig.spin(0.5);
+	rig.spin(0.4);
 	rig.emu->injectGarbage(150);
 	const auto before = rig.drv->stats().sips;
 	const auto states = rig.spin(1.0, [&] { rig.drv->setVelocity(0.1, 0.0); });
@@ -198,7 +210,7 @@ TEST(PioneerDriver, RandomFaultRatesKeepOdometryExact)
 	eo.garbage_rate = 0.2;
 	TRig rig(true, eo);
 	ASSERT_TRUE(rig.drv->connect());
-	rig.spin(3.0, [&] { rig.drv->setVelocity(0.25, 0.3); });
+	rig.spin(1.5, [&] { rig.drv->setVelocity(0.25, 0.3); });
 	rig.drv->stop();
 	// Faults continue while stopped; collect enough clean SIPs.
 	const auto last = rig.spin(0.8);
@@ -213,7 +225,7 @@ TEST(PioneerDriver, ReportsSilenceAndReconnects)
 {
 	TRig rig(false);
 	ASSERT_TRUE(rig.drv->connect());
-	rig.spin(1.0, [&] { rig.drv->setVelocity(0.2, 0.0); });
+	rig.spin(0.5, [&] { rig.drv->setVelocity(0.2, 0.0); });
 	rig.emu->silence(1.5);
 	const auto t0 = std::chrono::steady_clock::now();
 	while (rig.drv->stats().connected && std::chrono::steady_clock::now() - t0 < std::chrono::seconds(3))
@@ -224,7 +236,7 @@ TEST(PioneerDriver, ReportsSilenceAndReconnects)
 	EXPECT_FALSE(st.connected);
 	EXPECT_NEAR(detect_s, 1.0, 0.25);  // silence_timeout_s
 	EXPECT_NE(st.lastError.find("no SIP"), std::string::npos) << st.lastError;
-	rig.spin(2.5);
+	EXPECT_TRUE(rig.spinUntil([&] { return rig.drv->isConnected(); }, 2.5));
 	st = rig.drv->stats();
 	EXPECT_TRUE(st.connected);
 	EXPECT_EQ(st.connections, 2u);
@@ -240,13 +252,13 @@ TEST(PioneerDriver, ReconnectsAfterCablePulledTcpAndPty)
 	{
 		TRig rig(tcp);
 		ASSERT_TRUE(rig.drv->connect());
-		rig.spin(0.5, [&] { rig.drv->setVelocity(0.2, 0.0); });
+		rig.spin(0.3, [&] { rig.drv->setVelocity(0.2, 0.0); });
 		const std::string ptyBefore = tcp ? "" : std::filesystem::read_symlink(rig.emu->ptyPath()).string();
 		rig.emu->dropConnection();
 		rig.spin(0.3);
 		auto st = rig.drv->stats();
 		EXPECT_GE(st.linkErrors + st.silenceTimeouts, 1u) << (tcp ? "tcp" : "pty");
-		rig.spin(2.0);
+		EXPECT_TRUE(rig.spinUntil([&] { return rig.drv->isConnected(); }, 2.0));
 		st = rig.drv->stats();
 		EXPECT_TRUE(st.connected) << st.lastError;
 		EXPECT_EQ(st.connections, 2u);

@@ -10,9 +10,12 @@ namespace hslam::hwdrivers
 std::vector<mrpt::math::TPose2D> parseSonarPoses(const std::string& text)
 {
 	std::vector<mrpt::math::TPose2D> poses;
-	std::stringstream all(text);
+	std::string normalised = text;
+	for (char& c : normalised)
+		if (c == ';') c = ',';
+	std::stringstream all(normalised);
 	std::string entry;
-	while (std::getline(all, entry, ';'))
+	while (std::getline(all, entry, ','))
 	{
 		if (entry.find_first_not_of(" \t") == std::string::npos) continue;
 		std::istringstream is(entry);
