@@ -40,5 +40,6 @@ double bestTimeOf(int repetitions, F&& fn)
 inline const char* kMrptSampleRawlog = "/usr/share/mrpt/datasets/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog";
 
 int runGridSuite(const std::vector<std::string>& rawlogs, int repetitions);
+int runHwdriversSuite(int repetitions);
 
 }  // namespace hslam::bench

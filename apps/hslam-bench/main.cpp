@@ -12,8 +12,8 @@
 
 int main(int argc, char** argv)
 {
-	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid)", ' ', "0.1");
-	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid", true, "", "suite", cmd);
+	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, hwdrivers)", ' ', "0.1");
+	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid, hwdrivers", true, "", "suite", cmd);
 	TCLAP::MultiArg<std::string> rawlogs("r", "rawlog",
 										 "rawlog(s) with laser scans and odometry (default: MRPT's sample rawlog)",
 										 false, "file", cmd);
@@ -25,7 +25,8 @@ int main(int argc, char** argv)
 		std::vector<std::string> inputs = rawlogs.getValue();
 		if (inputs.empty()) inputs.push_back(hslam::bench::kMrptSampleRawlog);
 		if (suite.getValue() == "grid") return hslam::bench::runGridSuite(inputs, std::max(1, repetitions.getValue()));
-		std::cerr << "hslam-bench: unknown suite '" << suite.getValue() << "' (available: grid)\n";
+		if (suite.getValue() == "hwdrivers") return hslam::bench::runHwdriversSuite(std::max(1, repetitions.getValue()));
+		std::cerr << "hslam-bench: unknown suite '" << suite.getValue() << "' (available: grid, hwdrivers)\n";
 		return 1;
 	}
 	catch (const TCLAP::ArgException& e)
