@@ -2,13 +2,18 @@
  * loopback TCP port) and a SICK LMS200 (serial telegrams on a pseudo-terminal)
  * sharing one world, so MRPT's rawlog-grabber (with our plug-in) or
  * hslam-grabber can record without hardware. The robot moves as the client
- * commands (differential drive); sonars and laser see the world: a simulator
- * scene (libs/sim, --scene) or a rectangular room (--box).
+ * commands (differential drive; with --sim-ini the simulator's P3-DX
+ * kinematics with UMBmark odometry errors, thesis 4.1); sonars and laser see
+ * the world: a simulator scene (libs/sim, --scene) or a rectangular room (--box).
  * Runs until SIGINT/SIGTERM or --duration; --truth writes the true pose (TUM). */
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/hwdrivers/CArcosEmulator.h>
 #include <hslam/hwdrivers/CLms200Emulator.h>
+#include <hslam/common/options_io.h>
+#include <hslam/sim/CDiffDriveRobot.h>
 #include <hslam/sim/scene.h>
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/system/filesystem.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/system/datetime.h>
 
@@ -41,6 +46,24 @@ class CSimWorldAdapter : public CEmulatorWorld
 	hslam::sim::CWorld m_world;
 };
 
+/** The simulator's P3-DX kinematics (UMBmark systematic + random odometry
+ * errors, thesis 4.1) as the emulator's motion model. */
+class CSimKinematics : public CEmulatorKinematics
+{
+   public:
+	CSimKinematics(const hslam::sim::TDiffDriveOptions& o, const mrpt::poses::CPose2D& start, unsigned seed)
+		: m_robot(o, start.asTPose()), m_rng(seed)
+	{
+	}
+	void step(double v, double w, double dt) override { m_robot.step(v, w, dt, m_rng); }
+	mrpt::poses::CPose2D truePose() const override { return mrpt::poses::CPose2D(m_robot.truePose()); }
+	mrpt::poses::CPose2D odometryPose() const override { return mrpt::poses::CPose2D(m_robot.odometryPose()); }
+
+   private:
+	hslam::sim::CDiffDriveRobot m_robot;
+	std::mt19937_64 m_rng;
+};
+
 std::vector<double> numbers(const std::string& text, size_t n, const std::string& what)
 {
 	std::istringstream is(text);
@@ -58,6 +81,7 @@ int main(int argc, char** argv)
 		TCLAP::CmdLine cmd("hslam-device-emulator: Pioneer ARCOS + SICK LMS200 emulators on pseudo-terminals/TCP", ' ', "1.0");
 		TCLAP::ValueArg<std::string> scene("", "scene", "simulator scene file (config_ini/sim-worlds/*.scene)", false, "", "file", cmd);
 		TCLAP::ValueArg<std::string> box("", "box", "rectangular room 'xmin ymin xmax ymax' (m) if no --scene", false, "-2 -3 6 3", "text", cmd);
+		TCLAP::ValueArg<std::string> simIni("", "sim-ini", "simulator INI whose [robot] section (UMBmark errors, noise, limits) drives the robot; default: error-free kinematics", false, "", "file", cmd);
 		TCLAP::ValueArg<std::string> start("", "start", "true start pose 'x_m y_m yaw_deg'", false, "0 0 0", "text", cmd);
 		TCLAP::ValueArg<std::string> pioneerPty("", "pioneer-pty", "symlink for the Pioneer's pseudo-terminal ('' = none)", false, "", "path", cmd);
 		TCLAP::ValueArg<int> pioneerTcp("", "pioneer-tcp", "loopback TCP port for the Pioneer (-1 = none, 0 = any)", false, -1, "port", cmd);
@@ -90,7 +114,17 @@ int main(int argc, char** argv)
 		eo.partial_rate = partial.getValue();
 		eo.garbage_rate = garbage.getValue();
 		eo.start_pose = mrpt::poses::CPose2D(s[0], s[1], s[2] * M_PI / 180.0);
-		CArcosEmulator pioneer(eo, world);
+		std::shared_ptr<CEmulatorKinematics> kinematics;
+		if (!simIni.getValue().empty())
+		{
+			if (!mrpt::system::fileExists(simIni.getValue())) throw std::runtime_error("not found: " + simIni.getValue());
+			mrpt::config::CConfigFile simCfg(simIni.getValue());
+			hslam::sim::TDiffDriveOptions ro;
+			hslam::common::CSectionReader reader(simCfg, "robot");  // other [robot] keys belong to hslam-simulate
+			ro.visit(reader);
+			kinematics = std::make_shared<CSimKinematics>(ro, eo.start_pose, 1);
+		}
+		CArcosEmulator pioneer(eo, world, kinematics);
 		pioneer.start();
 
 		std::unique_ptr<CLms200Emulator> lms;

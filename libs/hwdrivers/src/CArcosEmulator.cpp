@@ -27,10 +27,12 @@ Clock::duration toDuration(double s) { return std::chrono::duration_cast<Clock::
 constexpr double ANGLE_UNIT_RAD = 2.0 * M_PI / 4096.0;  // ARCOS heading unit
 }  // namespace
 
-CArcosEmulator::CArcosEmulator(const TOptions& options, std::shared_ptr<const CEmulatorWorld> world)
-	: m_opts(options), m_world(std::move(world)), m_truePose(options.start_pose), m_odomOrigin(options.start_pose),
-	  m_rng(options.seed)
+CArcosEmulator::CArcosEmulator(const TOptions& options, std::shared_ptr<const CEmulatorWorld> world,
+							   std::shared_ptr<CEmulatorKinematics> kinematics)
+	: m_opts(options), m_world(std::move(world)), m_kin(std::move(kinematics)), m_rng(options.seed)
 {
+	if (!m_kin) m_kin = std::make_shared<CExactKinematics>(options.start_pose);
+	m_odomOrigin = m_kin->odometryPose();
 	m_sonarPoses = parseSonarPoses(m_opts.sonar_poses);
 }
 
@@ -85,7 +87,7 @@ std::string CArcosEmulator::ptyPath() const { return m_pty.clientPath(); }
 mrpt::poses::CPose2D CArcosEmulator::truePose() const
 {
 	std::lock_guard<std::mutex> lk(m_mtx);
-	return m_truePose;
+	return m_kin->truePose();
 }
 
 TArcosEmulatorStats CArcosEmulator::stats() const
@@ -198,7 +200,7 @@ void CArcosEmulator::handlePacket(TClient& c, const std::vector<uint8_t>& payloa
 		case CMD_ENABLE: m_motors = arg != 0; break;
 		case CMD_VEL: m_v = arg * 1e-3; break;
 		case CMD_RVEL: m_w = arg * M_PI / 180.0; break;
-		case CMD_SETO: m_odomOrigin = m_truePose; break;
+		case CMD_SETO: m_odomOrigin = m_kin->odometryPose(); break;
 		case CMD_SONAR: m_sonarOn = arg != 0; break;
 		case CMD_STOP:
 		case CMD_ESTOP: m_v = m_w = 0; break;
@@ -249,34 +251,20 @@ void CArcosEmulator::acceptClients()
 void CArcosEmulator::tick(double dt)
 {
 	if (!m_motors) return;
-	const double th = m_truePose.phi();
-	double x = m_truePose.x(), y = m_truePose.y(), thNew = th + m_w * dt;
-	if (std::abs(m_w) < 1e-9)
-	{
-		x += m_v * dt * std::cos(th);
-		y += m_v * dt * std::sin(th);
-	}
-	else
-	{
-		x += m_v / m_w * (std::sin(thNew) - std::sin(th));
-		y -= m_v / m_w * (std::cos(thNew) - std::cos(th));
-	}
 	// Stall against a wall: the P3-DX front is 0.21 m, the rear 0.30 m from
-	// the centre of rotation (Aria p3dx-sh.p).
-	const double ahead = m_v >= 0 ? 0.21 : 0.30;
-	const double dir = m_v >= 0 ? thNew : thNew + M_PI;
-	if (m_v != 0 && m_world && m_world->rayRange_m(x, y, dir, 1.0) < ahead)
-	{
-		x = m_truePose.x();
-		y = m_truePose.y();
-	}
-	m_truePose = mrpt::poses::CPose2D(x, y, mrpt::math::wrapToPi(thNew));
+	// the centre of rotation (Aria p3dx-sh.p); the wheels then only turn.
+	const mrpt::poses::CPose2D p = m_kin->truePose();
+	const double ahead = (m_v >= 0 ? 0.21 : 0.30) + std::abs(m_v) * dt;
+	const double dir = m_v >= 0 ? p.phi() : p.phi() + M_PI;
+	const bool blocked = m_v != 0 && m_world && m_world->rayRange_m(p.x(), p.y(), dir, 1.0) < ahead;
+	m_kin->step(blocked ? 0.0 : m_v, m_w, dt);
 }
 
 std::vector<uint8_t> CArcosEmulator::makeSip()
 {
 	TSip s;
-	const mrpt::poses::CPose2D odo = m_truePose - m_odomOrigin;
+	const mrpt::poses::CPose2D odo = m_kin->odometryPose() - m_odomOrigin;
+	const mrpt::poses::CPose2D truth = m_kin->truePose();
 	const bool moving = m_motors && (m_v != 0 || m_w != 0);
 	s.type = moving ? SIP_MOVING : SIP_STOPPED;
 	s.xpos_raw = static_cast<uint16_t>(std::lround(odo.x() * 1000.0) & 0x7FFF);
@@ -296,7 +284,7 @@ std::vector<uint8_t> CArcosEmulator::makeSip()
 		{
 			const size_t i = m_nextSonar;
 			m_nextSonar = (m_nextSonar + 1) % m_sonarPoses.size();
-			const mrpt::poses::CPose2D sp = m_truePose + mrpt::poses::CPose2D(m_sonarPoses[i]);
+			const mrpt::poses::CPose2D sp = truth + mrpt::poses::CPose2D(m_sonarPoses[i]);
 			const double r = m_world->rayRange_m(sp.x(), sp.y(), sp.phi(), m_opts.sonar_max_range_m);
 			s.sonars.push_back({static_cast<uint8_t>(i), static_cast<uint16_t>(std::lround(r * 1000.0))});
 		}

@@ -42,4 +42,21 @@ double CBoxWorld::rayRange_m(double x, double y, double angle_rad, double maxRan
 	return best;
 }
 
+void CExactKinematics::step(double v, double w, double dt)
+{
+	const double th = m_pose.phi(), thNew = th + w * dt;
+	double x = m_pose.x(), y = m_pose.y();
+	if (std::abs(w) < 1e-9)
+	{
+		x += v * dt * std::cos(th);
+		y += v * dt * std::sin(th);
+	}
+	else
+	{
+		x += v / w * (std::sin(thNew) - std::sin(th));
+		y -= v / w * (std::cos(thNew) - std::cos(th));
+	}
+	m_pose = mrpt::poses::CPose2D(x, y, std::atan2(std::sin(thNew), std::cos(thNew)));
+}
+
 }  // namespace hslam::hwdrivers

@@ -9,11 +9,12 @@
  * client packet arrived for watchdog_s (ARCOS: 2 s). Bytes before a header are
  * skipped (Aria writes "WMS2\r" first on serial).
  *
- * The robot moves by differential-drive kinematics (exact arc integration,
- * wheel base 2/DiffConvFactor = 357 mm for the reported wheel speeds) in a
- * CEmulatorWorld; sonars are ray-cast from the P3-DX front-ring poses. The
- * odometry it reports is the true motion since the last SETO (no drift), so a
- * test can compare the driver's odometry with truePose().
+ * The robot moves by a CEmulatorKinematics (default: exact arc integration,
+ * odometry = truth, so a test can compare the driver's odometry with
+ * truePose(); the simulator's CDiffDriveRobot adds UMBmark errors) in a
+ * CEmulatorWorld; sonars are ray-cast from the P3-DX front-ring poses. Reported
+ * wheel speeds use the wheel base 2/DiffConvFactor = 357 mm. The SIP position
+ * is the odometry since the last SETO.
  *
  * Faults (thread-safe calls, also random rates in TOptions): corrupted
  * checksums, truncated SIPs, garbage bytes, silence, dropped connection (TCP
@@ -67,7 +68,9 @@ class CArcosEmulator
 		unsigned seed = 1;
 	};
 
-	CArcosEmulator(const TOptions& options, std::shared_ptr<const CEmulatorWorld> world);
+	/** `kinematics` null = CExactKinematics from options.start_pose. */
+	CArcosEmulator(const TOptions& options, std::shared_ptr<const CEmulatorWorld> world,
+				   std::shared_ptr<CEmulatorKinematics> kinematics = nullptr);
 	~CArcosEmulator();
 
 	/** Opens the endpoints and starts the emulator thread; throws std::runtime_error. */
@@ -116,7 +119,8 @@ class CArcosEmulator
 	std::atomic<bool> m_quit{false};
 
 	mutable std::mutex m_mtx;  //!< guards everything below
-	mrpt::poses::CPose2D m_truePose, m_odomOrigin;
+	std::shared_ptr<CEmulatorKinematics> m_kin;
+	mrpt::poses::CPose2D m_odomOrigin;  //!< odometry pose at the last SETO
 	double m_v = 0, m_w = 0;
 	bool m_motors = false, m_sonarOn = true;
 	size_t m_nextSonar = 0;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <mrpt/math/TPose2D.h>
+#include <mrpt/poses/CPose2D.h>
 
 #include <vector>
 
@@ -37,6 +38,33 @@ class CBoxWorld : public CEmulatorWorld
    private:
 	TBox m_room;
 	std::vector<TBox> m_obstacles;
+};
+
+/** The emulated robot's motion: true pose and the odometry its encoders
+ * report. Pluggable like the world (the simulator's CDiffDriveRobot with its
+ * UMBmark errors plugs in through hslam-device-emulator). */
+class CEmulatorKinematics
+{
+   public:
+	virtual ~CEmulatorKinematics() = default;
+	/** Advances dt_s with the commanded velocities. */
+	virtual void step(double v_mps, double w_rad_s, double dt_s) = 0;
+	virtual mrpt::poses::CPose2D truePose() const = 0;
+	/** Dead-reckoning pose (any fixed origin). */
+	virtual mrpt::poses::CPose2D odometryPose() const = 0;
+};
+
+/** Error-free differential drive: exact arc integration, odometry = truth. */
+class CExactKinematics : public CEmulatorKinematics
+{
+   public:
+	explicit CExactKinematics(const mrpt::poses::CPose2D& start) : m_pose(start) {}
+	void step(double v_mps, double w_rad_s, double dt_s) override;
+	mrpt::poses::CPose2D truePose() const override { return m_pose; }
+	mrpt::poses::CPose2D odometryPose() const override { return m_pose; }
+
+   private:
+	mrpt::poses::CPose2D m_pose;
 };
 
 }  // namespace hslam::hwdrivers
