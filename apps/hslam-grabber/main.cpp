@@ -7,10 +7,12 @@
  *    every observation received before the stop; the gzip stream is sync-flushed
  *    every GRABBER_PERIOD_MS so even a SIGKILL leaves a readable file;
  *  - correct odometry increments in sensory-frame mode (CSensoryFrameBuilder);
- *  - keyboard teleoperation of the Pioneer while recording (--teleop keyboard);
+ *  - keyboard or joystick (MRPT's CJoystick) teleoperation of the Pioneer while
+ *    recording (--teleop keyboard|joystick);
  *  - optional live mapping (--map-out DIR): the hslam mapping pipeline runs on
  *    the entries as they are written and the map is written at the stop.
  * Prints a summary with per-label rates, throughput and CPU use. */
+#include "CJoystickTeleop.h"
 #include "CKeyboardTeleop.h"
 #include "CRecordingWriter.h"
 #include "CSensorThread.h"
@@ -87,13 +89,18 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<std::string> plugins("p", "plugins", "comma-separated plug-in modules to load", false, "", "a.so,b.so", cmd);
 		TCLAP::ValueArg<std::string> out("o", "out", "output rawlog (default <rawlog_prefix>_<date>.rawlog)", false, "", "file", cmd);
 		TCLAP::ValueArg<double> duration("", "duration", "stop after this many seconds (0 = Ctrl-C / SIGTERM / q)", false, 0, "s", cmd);
-		TCLAP::ValueArg<std::string> teleop("", "teleop", "none | keyboard (w/s/a/d/space, q quits)", false, "none", "mode", cmd);
+		TCLAP::ValueArg<std::string> teleop("", "teleop", "none | keyboard (w/s/a/d/space, q quits) | joystick (button 0 dead-man, button 1 quits)", false, "none", "mode", cmd);
+		TCLAP::ValueArg<int> joyIndex("", "joystick", "joystick index (/dev/input/js<N>)", false, 0, "N", cmd);
+		TCLAP::ValueArg<double> joyMaxV("", "joystick-max-v", "speed at full stick (m/s)", false, 0.4, "m/s", cmd);
+		TCLAP::ValueArg<double> joyMaxW("", "joystick-max-w", "turn rate at full stick (deg/s)", false, 40, "deg/s", cmd);
 		TCLAP::ValueArg<double> vStep("", "teleop-v-step", "keyboard speed step (m/s)", false, 0.05, "m/s", cmd);
 		TCLAP::ValueArg<double> wStep("", "teleop-w-step", "keyboard turn-rate step (deg/s)", false, 10, "deg/s", cmd);
 		TCLAP::ValueArg<double> hold("", "hold", "reordering delay before writing (s)", false, 0.5, "s", cmd);
 		TCLAP::ValueArg<std::string> mapOut("", "map-out", "run the mapping pipeline live, write the map here at the stop", false, "", "dir", cmd);
 		TCLAP::ValueArg<std::string> mapConfig("", "map-config", "pipeline INI (default config_ini/hslam-default.ini values)", false, "", "file", cmd);
 		if (!cmd.parse(argc, argv)) return 0;
+		if (teleop.getValue() != "none" && teleop.getValue() != "keyboard" && teleop.getValue() != "joystick")
+			throw std::runtime_error("--teleop '" + teleop.getValue() + "': expected none, keyboard or joystick");
 
 		if (!plugins.getValue().empty())
 		{
@@ -151,7 +158,14 @@ int main(int argc, char** argv)
 		}
 
 		std::unique_ptr<CKeyboardTeleop> keys;
+		std::unique_ptr<CJoystickTeleop> joy;
 		if (teleop.getValue() == "keyboard") keys = std::make_unique<CKeyboardTeleop>(vStep.getValue(), wStep.getValue() * M_PI / 180);
+		if (teleop.getValue() == "joystick")
+			joy = std::make_unique<CJoystickTeleop>(joyIndex.getValue(), joyMaxV.getValue(), joyMaxW.getValue() * M_PI / 180);
+		const auto command = [&threads](double v, double w) {
+			for (auto& t : threads)
+				if (auto* p = dynamic_cast<hslam::hwdrivers::CPioneerSensor*>(&t->sensor())) p->driver().setVelocity(v, w);
+		};
 		std::string failure;
 		auto nextWrite = std::chrono::steady_clock::now();
 		while (!g_stop)
@@ -160,9 +174,12 @@ int main(int argc, char** argv)
 			if (keys && keys->active())
 			{
 				if (!keys->poll()) break;
-				for (auto& t : threads)
-					if (auto* p = dynamic_cast<hslam::hwdrivers::CPioneerSensor*>(&t->sensor()))
-						p->driver().setVelocity(keys->v_mps(), keys->w_rad_s());
+				command(keys->v_mps(), keys->w_rad_s());
+			}
+			if (joy)
+			{
+				if (!joy->poll()) break;
+				if (joy->active()) command(joy->v_mps(), joy->w_rad_s());
 			}
 			for (auto& t : threads)
 				if (t->failed()) failure = t->error();
