@@ -91,6 +91,9 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<double> badCk("", "bad-checksum-rate", "fraction of SIPs sent with a bad checksum", false, 0, "0..1", cmd);
 		TCLAP::ValueArg<double> partial("", "partial-rate", "fraction of SIPs truncated", false, 0, "0..1", cmd);
 		TCLAP::ValueArg<double> garbage("", "garbage-rate", "fraction of SIPs preceded by garbage bytes", false, 0, "0..1", cmd);
+		TCLAP::ValueArg<double> dropEvery("", "drop-every", "pull the cable every N s: close TCP clients, re-create the pty (0 = never)", false, 0, "s", cmd);
+		TCLAP::ValueArg<double> silenceEvery("", "silence-every", "go silent every N s (0 = never)", false, 0, "s", cmd);
+		TCLAP::ValueArg<double> silenceFor("", "silence-for", "length of each silence (s)", false, 2.0, "s", cmd);
 		TCLAP::ValueArg<double> duration("", "duration", "stop after this many seconds (0 = on SIGINT/SIGTERM)", false, 0, "s", cmd);
 		TCLAP::ValueArg<std::string> truth("", "truth", "write the true robot pose at 20 Hz to this TUM file at exit", false, "", "file", cmd);
 		if (!cmd.parse(argc, argv)) return 0;
@@ -146,9 +149,25 @@ int main(int argc, char** argv)
 
 		hslam::common::TTrajectory2D traj;
 		const auto t0 = std::chrono::steady_clock::now();
+		auto nextDrop = t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(dropEvery.getValue()));
+		auto nextSilence = t0 + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(silenceEvery.getValue()));
+		const auto every = [](double s) { return std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(s)); };
 		while (!g_stop)
 		{
 			std::this_thread::sleep_for(std::chrono::milliseconds(50));
+			const auto now = std::chrono::steady_clock::now();
+			if (dropEvery.getValue() > 0 && now >= nextDrop)
+			{
+				pioneer.dropConnection();
+				std::cout << "fault: connection dropped" << std::endl;
+				nextDrop += every(dropEvery.getValue());
+			}
+			if (silenceEvery.getValue() > 0 && now >= nextSilence)
+			{
+				pioneer.silence(silenceFor.getValue());
+				std::cout << "fault: silent for " << silenceFor.getValue() << " s" << std::endl;
+				nextSilence += every(silenceEvery.getValue());
+			}
 			if (!truth.getValue().empty())
 				traj.push_back({mrpt::Clock::toDouble(mrpt::Clock::now()), pioneer.truePose().asTPose()});
 			if (duration.getValue() > 0 &&

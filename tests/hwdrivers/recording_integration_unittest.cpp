@@ -1,5 +1,5 @@
 /* Integration: the device emulators (hslam-device-emulator: Pioneer ARCOS and
- * SICK LMS200 on pseudo-terminals, box world) recorded by MRPT's real
+ * SICK LMS200 on pseudo-terminals; a box room or the simulator's lab scene) recorded by MRPT's real
  * rawlog-grabber with our plug-in and by hslam-grabber, using the shipped
  * config_ini/grabber-pioneer-lms200.ini with the device paths replaced, while
  * a test client commands a motion over UDP (teleop_udp_port). The rawlog is
@@ -12,6 +12,7 @@
 #include <hslam/hwdrivers/CEmulatorWorld.h>
 #include <hslam/hwdrivers/CUdpVelocityReceiver.h>
 #include <hslam/io/CRawlogReader.h>
+#include <hslam/sim/scene.h>
 #include <hslam/testing/temp_dir.h>
 #include <hslam/testing/test_paths.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -33,8 +34,37 @@ namespace fs = std::filesystem;
 
 namespace
 {
-const CBoxWorld::TBox ROOM{-2, -3, 6, 3};
-const mrpt::poses::CPose2D START(1.0, 0.5, 0.0);
+/** Where the emulated robot lives, and the expected range along a ray there. */
+struct TWorldSetup
+{
+	std::vector<std::string> emulatorArgs;
+	mrpt::poses::CPose2D start;
+	std::function<double(double x, double y, double a, double maxRange)> ray;
+};
+
+/** A rectangular room (the emulator's own CBoxWorld). */
+TWorldSetup boxRoom()
+{
+	auto world = std::make_shared<CBoxWorld>(CBoxWorld::TBox{-2, -3, 6, 3});
+	return {{"--box", "-2 -3 6 3", "--start", "1 0.5 0"},
+			mrpt::poses::CPose2D(1.0, 0.5, 0.0),
+			[world](double x, double y, double a, double m) { return world->rayRange_m(x, y, a, m); }};
+}
+
+/** The simulator's lab scene (walls, furniture, chair legs), ranges from the
+ * simulator's own ray caster. */
+TWorldSetup labScene()
+{
+	const std::string scene = std::string(HSLAM_SOURCE_DIR) + "/config_ini/sim-worlds/lab.scene";
+	auto world = std::make_shared<hslam::sim::CWorld>(hslam::sim::loadSceneFile(scene).world);
+	return {{"--scene", scene, "--start", "1.5 1.5 0"},
+			mrpt::poses::CPose2D(1.5, 1.5, 0.0),
+			[world](double x, double y, double a, double m) {
+				const auto h = world->castRay({x, y}, a, m, false);
+				return h.hit ? h.range_m : m;
+			}};
+}
+
 constexpr double V_CMD = 0.3, W_CMD = 0.25, MOTION_S = 2.5;
 
 std::string readFile(const std::string& p)
@@ -62,13 +92,12 @@ std::string writeIni(const hslam::testing::CTempDir& tmp, int udpPort, bool sens
 	return path;
 }
 
-std::unique_ptr<CBackgroundProcess> startEmulators(const hslam::testing::CTempDir& tmp)
+std::unique_ptr<CBackgroundProcess> startEmulators(const hslam::testing::CTempDir& tmp, const TWorldSetup& w)
 {
-	auto p = std::make_unique<CBackgroundProcess>(
-		std::vector<std::string>{std::string(HSLAM_BIN_DIR) + "/hslam-device-emulator", "--pioneer-pty", tmp.file("pioneer"),
-								 "--lms200-pty", tmp.file("lms"), "--box", "-2 -3 6 3", "--start", "1 0.5 0", "--truth",
-								 tmp.file("truth.tum")},
-		tmp.file("emulator.log"));
+	std::vector<std::string> args{std::string(HSLAM_BIN_DIR) + "/hslam-device-emulator", "--pioneer-pty", tmp.file("pioneer"),
+								  "--lms200-pty", tmp.file("lms"), "--truth", tmp.file("truth.tum")};
+	args.insert(args.end(), w.emulatorArgs.begin(), w.emulatorArgs.end());
+	auto p = std::make_unique<CBackgroundProcess>(args, tmp.file("emulator.log"));
 	EXPECT_TRUE(p->waitForLog("ready", 5.0)) << p->log();
 	return p;
 }
@@ -123,10 +152,11 @@ TRecording readRecording(const std::string& path)
 }
 
 /** All the checks shared by both recorders. */
-void checkRecording(const std::string& rawlog, const std::string& truthTum, const hslam::testing::CTempDir& tmp)
+void checkRecording(const std::string& rawlog, const std::string& truthTum, const hslam::testing::CTempDir& tmp,
+					const TWorldSetup& world)
 {
 	const TRecording r = readRecording(rawlog);
-	const CBoxWorld world(ROOM);
+	const mrpt::poses::CPose2D& START = world.start;
 	for (const auto& [label, n] : r.nonIncreasing) EXPECT_EQ(n, 0u) << "timestamps of " << label;
 
 	// Odometry: ~10 Hz, follows the commanded arc, ends at the true pose.
@@ -148,8 +178,8 @@ void checkRecording(const std::string& rawlog, const std::string& truthTum, cons
 	std::map<mrpt::Clock::time_point, mrpt::poses::CPose2D> odoAt;
 	for (const auto& o : r.odometry) odoAt[o->timestamp] = o->odometry;
 	size_t sonarChecked = 0;
-	double sonarMaxErr = 0, sonarSumErr = 0;  // max error relative to its tolerance; sum in m
-	size_t sonarReadings = 0;
+	double sonarSumErr = 0;
+	size_t sonarReadings = 0, sonarOutside = 0;
 	for (const auto& s : r.sonar)
 	{
 		const auto it = odoAt.find(s->timestamp);
@@ -158,27 +188,29 @@ void checkRecording(const std::string& rawlog, const std::string& truthTum, cons
 		for (const auto& m : s->sensedData)
 		{
 			const mrpt::poses::CPose2D sp = robot + mrpt::poses::CPose2D(m.sensorPose.x, m.sensorPose.y, m.sensorPose.yaw);
-			const double expected = std::min(5.0, world.rayRange_m(sp.x(), sp.y(), sp.phi(), 5.0));
+			const double expected = std::min(5.0, world.ray(sp.x(), sp.y(), sp.phi(), 5.0));
 			// Tolerance: 1 mm range units + the heading quantisation of the SIP
 			// (2*pi/4096 rad, half of it as rounding error) over an oblique ray.
 			const double tol = 0.0015 + expected * 0.5 * 2 * M_PI / 4096 * 3;
-			sonarMaxErr = std::max(sonarMaxErr, std::abs(m.sensedDistance - expected) / tol);
-			sonarSumErr += std::abs(m.sensedDistance - expected);
+			const double err = std::abs(m.sensedDistance - expected);
+			sonarOutside += err > tol;
+			sonarSumErr += std::min(err, 0.1);
 			++sonarReadings;
 		}
 		++sonarChecked;
 	}
 	EXPECT_GE(sonarChecked, 30u);
-	EXPECT_LT(sonarMaxErr, 1.0);
-	EXPECT_LT(sonarSumErr / std::max<size_t>(sonarReadings, 1), 0.002);  // mean error below 2 mm
+	// All readings within tolerance, except rays grazing an edge or a thin
+	// chair leg, where the 1 mm / 0.088 deg pose quantisation flips hit/miss.
+	EXPECT_LE(sonarOutside, sonarReadings / 100) << sonarOutside << " of " << sonarReadings;
+	EXPECT_LT(sonarSumErr / std::max<size_t>(sonarReadings, 1), 0.003);
 
 	// Laser: scans taken while the robot stood still after the motion.
 	const auto stillSince = std::find_if(r.odometry.rbegin(), r.odometry.rend(),
 										 [&](const auto& o) { return (o->odometry - lastOdo).norm() > 1e-6; });
 	ASSERT_NE(stillSince, r.odometry.rend());
 	const auto tStill = (*stillSince)->timestamp + std::chrono::milliseconds(300);
-	size_t scansChecked = 0;
-	double laserMaxErr = 0;
+	size_t scansChecked = 0, beams = 0, beamsOutside = 0;
 	for (const auto& s : r.laser)
 	{
 		if (s->timestamp < tStill) continue;
@@ -186,14 +218,18 @@ void checkRecording(const std::string& rawlog, const std::string& truthTum, cons
 		const mrpt::poses::CPose2D lp = trueEnd + mrpt::poses::CPose2D(s->sensorPose.x(), s->sensorPose.y(), s->sensorPose.yaw());
 		for (size_t i = 0; i < s->getScanSize(); ++i)
 		{
-			ASSERT_TRUE(s->getScanRangeValidity(i));
 			const double a = lp.phi() - M_PI / 2 + i * M_PI / 360.0;
-			laserMaxErr = std::max(laserMaxErr, std::abs(s->getScanRange(i) - world.rayRange_m(lp.x(), lp.y(), a, 8.0)));
+			const double expected = world.ray(lp.x(), lp.y(), a, 8.0);
+			++beams;
+			if (expected >= 8.0)  // no echo within the emulated 8 m: overflow value, invalid in MRPT
+				beamsOutside += s->getScanRangeValidity(i);
+			else  // cm mode: 5 mm rounding + pose quantisation
+				beamsOutside += !s->getScanRangeValidity(i) || std::abs(s->getScanRange(i) - expected) > 0.0075 + 0.002 * expected;
 		}
 		++scansChecked;
 	}
 	EXPECT_GE(scansChecked, 5u);
-	EXPECT_LT(laserMaxErr, 0.0075);  // cm mode: 5 mm rounding + pose quantisation
+	EXPECT_LE(beamsOutside, beams / 100) << beamsOutside << " of " << beams;
 
 	// MRPT's rawlog-edit reads it; hslam-process maps it.
 	const std::string info = tmp.file("info.txt");
@@ -222,7 +258,8 @@ TEST(RecordingIntegration, MrptRawlogGrabberWithOurPlugin)
 	hslam::testing::CTempDir tmp;
 	const int port = 47100 + static_cast<int>(getpid() % 500);
 	const std::string ini = writeIni(tmp, port, false);
-	auto emu = startEmulators(tmp);
+	const TWorldSetup world = boxRoom();
+	auto emu = startEmulators(tmp, world);
 	std::atomic<bool> done{false};
 	auto client = motionClient(port, 1.5, done);
 	// MRPT's grabber stops on a key on its standard input.
@@ -234,7 +271,7 @@ TEST(RecordingIntegration, MrptRawlogGrabberWithOurPlugin)
 	EXPECT_EQ(emu->stop(SIGTERM), 0);  // writes truth.tum
 	const std::string rawlog = findRawlog(tmp);
 	ASSERT_FALSE(rawlog.empty()) << readFile(tmp.file("grabber.log"));
-	checkRecording(rawlog, tmp.file("truth.tum"), tmp);
+	checkRecording(rawlog, tmp.file("truth.tum"), tmp, world);
 }
 
 TEST(RecordingIntegration, HslamGrabberRecordsEverythingUntilTheStop)
@@ -242,7 +279,8 @@ TEST(RecordingIntegration, HslamGrabberRecordsEverythingUntilTheStop)
 	hslam::testing::CTempDir tmp;
 	const int port = 47600 + static_cast<int>(getpid() % 500);
 	const std::string ini = writeIni(tmp, port, false);
-	auto emu = startEmulators(tmp);
+	const TWorldSetup world = labScene();  // the simulator's world
+	auto emu = startEmulators(tmp, world);
 	std::atomic<bool> done{false};
 	auto client = motionClient(port, 1.0, done);
 	const std::string rawlog = tmp.file("ours.rawlog");
@@ -256,7 +294,7 @@ TEST(RecordingIntegration, HslamGrabberRecordsEverythingUntilTheStop)
 	EXPECT_EQ(rc, 0) << log;
 	std::cout << log;  // rates, throughput and CPU use
 	EXPECT_EQ(emu->stop(SIGTERM), 0);
-	checkRecording(rawlog, tmp.file("truth.tum"), tmp);
+	checkRecording(rawlog, tmp.file("truth.tum"), tmp, world);
 	// Nothing lost at the end: the last odometry is within 2 SIP periods of the stop.
 	const TRecording r = readRecording(rawlog);
 	EXPECT_LT(mrpt::system::timeDifference(r.odometry.back()->timestamp, t1), 0.35);
@@ -271,7 +309,7 @@ TEST(RecordingIntegration, HslamGrabberStoppedBySigtermOrKilledLeavesAValidRawlo
 	{
 		hslam::testing::CTempDir tmp;
 		const std::string ini = writeIni(tmp, 0, false);
-		auto emu = startEmulators(tmp);
+		auto emu = startEmulators(tmp, boxRoom());
 		const std::string rawlog = tmp.file("stop.rawlog");
 		CBackgroundProcess grabber({std::string(HSLAM_BIN_DIR) + "/hslam-grabber", ini, "-o", rawlog}, tmp.file("g.log"));
 		ASSERT_TRUE(grabber.waitForLog("link up", 5.0)) << grabber.log();
