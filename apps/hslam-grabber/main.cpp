@@ -192,6 +192,7 @@ int main(int argc, char** argv)
 				nextWrite = now + std::chrono::milliseconds(g.grabber_period_ms);
 			}
 		}
+		const double stopTime = mrpt::Clock::toDouble(mrpt::Clock::now());
 		for (auto& t : threads) t->stop();
 		writer.finish();
 		const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -215,7 +216,8 @@ int main(int argc, char** argv)
 		}
 		std::cout << "objects=" << writer.objectsWritten() << "\nobservations=" << writer.observationsWritten()
 				  << "\nwall_s=" << wall << "\ncpu_s=" << cpu << "\ncpu_percent=" << 100.0 * cpu / std::max(wall, 1e-9)
-				  << "\nobservations_per_s=" << writer.observationsWritten() / std::max(wall, 1e-9) << "\n";
+				  << "\nobservations_per_s=" << writer.observationsWritten() / std::max(wall, 1e-9) << "\n"
+				  << std::setprecision(6) << "stop_time=" << stopTime << "\n";
 		if (!failure.empty())
 		{
 			std::cerr << "hslam-grabber: stopped because a sensor failed: " << failure << "\n";

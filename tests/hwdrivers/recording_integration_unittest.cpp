@@ -102,10 +102,14 @@ std::unique_ptr<CBackgroundProcess> startEmulators(const hslam::testing::CTempDi
 	return p;
 }
 
-/** Test client: waits `delay_s`, commands (V_CMD, W_CMD) for MOTION_S, then zero. */
-std::thread motionClient(int port, double delay_s, std::atomic<bool>& done)
+/** Test client: waits until the recorder's log shows the Pioneer link up,
+ * then `delay_s`, commands (V_CMD, W_CMD) for MOTION_S, then zero. */
+std::thread motionClient(int port, double delay_s, std::string recorderLog)
 {
-	return std::thread([=, &done] {
+	return std::thread([=] {
+		const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+		while (readFile(recorderLog).find("link up") == std::string::npos && std::chrono::steady_clock::now() < deadline)
+			std::this_thread::sleep_for(std::chrono::milliseconds(20));
 		std::this_thread::sleep_for(std::chrono::duration<double>(delay_s));
 		const auto t0 = std::chrono::steady_clock::now();
 		while (std::chrono::steady_clock::now() - t0 < std::chrono::duration<double>(MOTION_S))
@@ -118,7 +122,6 @@ std::thread motionClient(int port, double delay_s, std::atomic<bool>& done)
 			sendUdpVelocity(port, 0, 0);
 			std::this_thread::sleep_for(std::chrono::milliseconds(100));
 		}
-		done = true;
 	});
 }
 
@@ -260,8 +263,7 @@ TEST(RecordingIntegration, MrptRawlogGrabberWithOurPlugin)
 	const std::string ini = writeIni(tmp, port, false);
 	const TWorldSetup world = boxRoom();
 	auto emu = startEmulators(tmp, world);
-	std::atomic<bool> done{false};
-	auto client = motionClient(port, 1.5, done);
+	auto client = motionClient(port, 0.3, tmp.file("grabber.log"));
 	// MRPT's grabber stops on a key on its standard input.
 	const int rc = hslam::testing::runCommand("(sleep 6.5; echo q) | rawlog-grabber -p " + std::string(HSLAM_BINARY_DIR) +
 											  "/lib/libhslam-hwdrivers-plugin.so '" + ini + "' > '" + tmp.file("grabber.log") +
@@ -281,8 +283,7 @@ TEST(RecordingIntegration, HslamGrabberRecordsEverythingUntilTheStop)
 	const std::string ini = writeIni(tmp, port, false);
 	const TWorldSetup world = labScene();  // the simulator's world
 	auto emu = startEmulators(tmp, world);
-	std::atomic<bool> done{false};
-	auto client = motionClient(port, 1.0, done);
+	auto client = motionClient(port, 0.3, tmp.file("grabber.log"));
 	const std::string rawlog = tmp.file("ours.rawlog");
 	const auto t0 = mrpt::Clock::now();
 	const int rc = hslam::testing::runCommand(std::string(HSLAM_BIN_DIR) + "/hslam-grabber '" + ini + "' --duration 6 -o '" +
@@ -295,9 +296,14 @@ TEST(RecordingIntegration, HslamGrabberRecordsEverythingUntilTheStop)
 	std::cout << log;  // rates, throughput and CPU use
 	EXPECT_EQ(emu->stop(SIGTERM), 0);
 	checkRecording(rawlog, tmp.file("truth.tum"), tmp, world);
-	// Nothing lost at the end: the last odometry is within 2 SIP periods of the stop.
+	// Nothing lost at the end: the last odometry is within ~2 SIP periods of
+	// the moment the recorder stopped its sensors (printed as stop_time=).
 	const TRecording r = readRecording(rawlog);
-	EXPECT_LT(mrpt::system::timeDifference(r.odometry.back()->timestamp, t1), 0.35);
+	const auto pos = log.find("stop_time=");
+	ASSERT_NE(pos, std::string::npos) << log;
+	const double stopTime = std::stod(log.substr(pos + 10));
+	EXPECT_LT(stopTime - mrpt::Clock::toDouble(r.odometry.back()->timestamp), 0.3);
+	EXPECT_LT(stopTime, mrpt::Clock::toDouble(t1));
 	EXPECT_NEAR(static_cast<double>(r.odometry.size()), 10.0 * mrpt::system::timeDifference(r.odometry.front()->timestamp, r.odometry.back()->timestamp) + 1, 2.0);
 	EXPECT_GT(mrpt::system::timeDifference(t0, r.odometry.front()->timestamp), 0.0);
 	EXPECT_TRUE(fs::exists(tmp.file("livemap") + "/map.png"));
