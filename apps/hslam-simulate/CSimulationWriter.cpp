@@ -21,7 +21,9 @@ CSimulationWriter::CSimulationWriter(const std::string& dir, size_t peopleCount)
 	  m_people(openCsv(dir + "/people.csv",
 					   "scan,t_s,person,x_m,y_m,heading_deg,leg0_x_m,leg0_y_m,leg1_x_m,leg1_y_m,leg0_stance,leg1_stance")),
 	  m_labels(openCsv(dir + "/beam_labels.csv", "scan,t_s,beam,angle_deg,range_m,kind,object,part")),
-	  m_sonar(openCsv(dir + "/sonar_truth.csv", "t_s,sonar,range_m,echo,bounces,kind,object"))
+	  m_sonar(openCsv(dir + "/sonar_truth.csv", "t_s,sonar,range_m,echo,bounces,kind,object")),
+	  m_waypoints(openCsv(dir + "/waypoints.csv",
+						  "waypoint,t_s,true_x_m,true_y_m,true_yaw_deg,odometry_x_m,odometry_y_m,odometry_yaw_deg"))
 {
 	m_tracks.people.resize(peopleCount);
 }
@@ -79,12 +81,20 @@ void CSimulationWriter::onSonar(const mrpt::obs::CObservationRange& obs,
 	}
 }
 
+void CSimulationWriter::onWaypointReached(size_t index, const hslam::sim::TSimulationFrame& frame)
+{
+	const auto& a = frame.true_pose;
+	const auto& o = frame.odometry_pose;
+	m_waypoints << index << "," << std::setprecision(3) << frame.t_s << std::setprecision(4) << "," << a.x << "," << a.y
+				<< "," << a.phi * 180.0 / M_PI << "," << o.x << "," << o.y << "," << o.phi * 180.0 / M_PI << "\n";
+}
+
 void CSimulationWriter::finish()
 {
 	m_rawlog.close();
 	hslam::common::writeTumFile(m_dir + "/ground_truth.tum", m_truth);
 	hslam::common::writeTumFile(m_dir + "/odometry.tum", m_odometry);
-	for (auto* f : {&m_people, &m_labels, &m_sonar})
+	for (auto* f : {&m_people, &m_labels, &m_sonar, &m_waypoints})
 	{
 		f->flush();
 		if (!*f) throw std::runtime_error(m_dir + ": write error in a CSV file");

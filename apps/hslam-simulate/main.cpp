@@ -64,9 +64,12 @@ int simulate(const std::string& iniFile, const std::vector<std::string>& overrid
 	CSimulationWriter writer(outDir, scene.people.size());
 	hslam::sim::CSimulator sim(config, std::move(scene));
 	int lastReport = -1;
+	long collisionSteps = 0;  // steps with the robot body (P3-DX radius 0.25 m) overlapping static geometry
 	while (!sim.done())
 	{
 		sim.step(writer);
+		const auto& p = sim.robot().truePose();
+		if (sim.scene().world.collides(mrpt::math::TPoint2D{p.x, p.y}, 0.25)) ++collisionSteps;
 		const int tenSeconds = static_cast<int>(sim.elapsed_s() / 10.0);
 		if (!quiet && tenSeconds != lastReport)
 		{
@@ -93,6 +96,7 @@ int simulate(const std::string& iniFile, const std::vector<std::string>& overrid
 			<< "sonar_readings=" << writer.sonarReadings() << "\n"
 			<< "sonar_echoes=" << writer.sonarEchoes() << "\n"
 			<< "sonar_multipath_echoes=" << writer.sonarMultipath() << "\n"
+			<< "robot_in_collision_s=" << collisionSteps * config.simulation.physics_dt_s << "\n"
 			<< "people=" << sim.scene().people.size() << "\n"
 			<< "corners=" << sim.scene().corners.size() << "\n"
 			<< "final_true_pose=" << truth.x << " " << truth.y << " " << truth.phi * 180.0 / M_PI << "\n"

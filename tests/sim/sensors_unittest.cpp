@@ -107,6 +107,22 @@ TEST(SimSonar, RingHasTheP3dxGeometryAndObservationLayout)
 	EXPECT_FLOAT_EQ(obs.sensedData[0].sensedDistance, 5.0f);
 }
 
+TEST(SimSonar, RearRingSeesBehind)
+{
+	TSonarOptions o;
+	o.noise_std_m = 0;
+	o.ring = "all16";
+	CSonarSimulator sonar(o);
+	ASSERT_EQ(sonar.ring().size(), 16u);
+	const CWorld w = wallAtX(-2.0);  // wall behind the robot
+	std::mt19937_64 rng(1);
+	mrpt::obs::CObservationRange obs;
+	sonar.simulate(w, TPose2D{0, 0, 0}, rng, obs);
+	ASSERT_EQ(obs.sensedData.size(), 16u);
+	EXPECT_FLOAT_EQ(obs.sensedData[3].sensedDistance, 5.0f);  // front: nothing
+	EXPECT_NEAR(obs.sensedData[11].sensedDistance, 2.0 - 0.255, 1e-4);  // rear, heading -170 deg
+}
+
 TEST(SimSonar, SonarPointingAtAWallMeasuresItsDistance)
 {
 	TSonarOptions o;

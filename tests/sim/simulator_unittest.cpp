@@ -74,6 +74,39 @@ TEST(SimSimulator, VelocityScriptGivesStraightTruthAndSensorRates)
 	EXPECT_NEAR(sink.scanFrames[10].t_s - sink.scanFrames[9].t_s, 0.2, 1e-6);  // UNIX-time doubles
 }
 
+TEST(SimSimulator, SensorSettingsDoNotChangeTheTruePath)
+{
+	auto finalPose = [](double laserNoise, bool sonar) {
+		TSimulatorConfig cfg;
+		cfg.path.mode = "velocity";
+		cfg.path.commands = "5 0.4 10; 5 0.4 -10";
+		cfg.robot.kinematics.wheel_noise_m_per_sqrt_m = 0.01;
+		cfg.laser.noise_std_m = laserNoise;
+		cfg.sonar.enabled = sonar;
+		CSimulator sim(cfg, parseSceneText("room -5 -5 5 -5 5 5 -5 5\n", "box"));
+		ISimulationSink ignore;
+		sim.run(ignore);
+		return sim.robot().truePose();
+	};
+	const auto a = finalPose(0.01, true), b = finalPose(0.05, false);
+	EXPECT_EQ(a.x, b.x);
+	EXPECT_EQ(a.phi, b.phi);
+}
+
+TEST(SimSimulator, ExternalCommandsDriveTheRobot)
+{
+	TSimulatorConfig cfg;
+	cfg.path.mode = "external";
+	cfg.robot.kinematics.max_rot_accel_rad_s2 = 0;
+	CSimulator sim(cfg, parseSceneText("room -5 -5 5 -5 5 5 -5 5\n", "box"));
+	TCountingSink sink;
+	sim.setExternalCommand(TVelocityCommand{0.0, M_PI / 10});  // 18 deg/s
+	for (int k = 0; k < 500; ++k) sim.step(sink);  // 5 s
+	EXPECT_FALSE(sim.done());
+	EXPECT_NEAR(sim.robot().truePose().phi, M_PI / 2, 1e-9);
+	EXPECT_EQ(sink.scans, 50u);
+}
+
 TEST(SimSimulator, ConfigErrorsNameSectionAndKey)
 {
 	mrpt::config::CConfigFileMemory cfg;
@@ -143,6 +176,84 @@ TEST(SimApp, OutputsAreReadableByMrptAndOurReaders)
 	EXPECT_GT(grid.getPos(5.0, 4.0), 0.5f);  // middle free
 	// Corners: the lab room has 4 concave room corners among them.
 	EXPECT_NE(readFile(dir.file("o/corners.csv")).find("0,0.0000,0.0000,concave,90.0"), std::string::npos);
+}
+
+TEST(SimApp, UmbmarkLapEndsAtTheOdometryStartButNotInTruth)
+{
+	hslam::testing::CTempDir dir;
+	ASSERT_EQ(simulate(sampleIni("umbmark"), dir.file("u"), "--set 'path.waypoints=4 0; 4 -4; 0 -4; 0 0'"), 0)
+		<< readFile(dir.file("u.log"));
+	std::ifstream f(dir.file("u/waypoints.csv"));
+	std::vector<std::vector<double>> rows;
+	std::string line;
+	std::getline(f, line);  // header
+	while (std::getline(f, line))
+	{
+		std::vector<double> v;
+		std::stringstream ss(line);
+		for (std::string cell; std::getline(ss, cell, ',');) v.push_back(std::stod(cell));
+		rows.push_back(v);
+	}
+	ASSERT_EQ(rows.size(), 4u);
+	const auto& end = rows.back();  // waypoint,t,true x,y,yaw,odometry x,y,yaw
+	EXPECT_LT(std::hypot(end[5], end[6]), 0.03);  // odometry believes it is back
+	const double trueError = std::hypot(end[2], end[3]);
+	// Ed = 1.001, Eb = 1.004 over a 16 m clockwise lap: the errors add up to decimetres.
+	EXPECT_GT(trueError, 0.1);
+	EXPECT_LT(trueError, 1.0);
+}
+
+TEST(SimApp, GridmapWorldGivesTheSameWallsAsTheScene)
+{
+	// Simulate in a scene of walls, then again in its own ground-truth
+	// .gridmap: the laser ranges agree within a cell.
+	hslam::testing::CTempDir dir;
+	std::ofstream(dir.file("walls.scene")) << "room 0 0 10 0 10 8 0 8\nbox 6 4 1 2 20\nwall 3 6 5 7\n";
+	const std::string noNoise = "--set simulation.duration_s=0.05 --set laser.noise_std_m=0 ";
+	ASSERT_EQ(simulate(sampleIni("lab"), dir.file("scene"), noNoise + "--set world.scene_file=" + dir.file("walls.scene")),
+			  0)
+		<< readFile(dir.file("scene.log"));
+	ASSERT_EQ(simulate(sampleIni("lab"), dir.file("grid"),
+					   noNoise + "--set world.scene_file= --set world.gridmap_file=" + dir.file("scene/gt_map.gridmap.gz")),
+			  0)
+		<< readFile(dir.file("grid.log"));
+	auto firstScan = [&](const std::string& rawlog) {
+		hslam::io::CRawlogReader reader(rawlog);
+		hslam::io::TRawlogEntry entry;
+		while (reader.next(entry))
+			if (auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(entry.observation))
+				return scan;
+		return mrpt::obs::CObservation2DRangeScan::Ptr();
+	};
+	const auto a = firstScan(dir.file("scene/sim.rawlog")), b = firstScan(dir.file("grid/sim.rawlog"));
+	ASSERT_TRUE(a && b);
+	ASSERT_EQ(a->getScanSize(), b->getScanSize());
+	int compared = 0, agreed = 0;
+	for (size_t i = 0; i < a->getScanSize(); ++i)
+	{
+		if (!a->getScanRangeValidity(i) || !b->getScanRangeValidity(i)) continue;
+		++compared;
+		// 5 cm cells are fatter than the zero-thickness walls: a beam grazing a
+		// wall's free end may hit its cell.
+		if (std::abs(a->getScanRange(i) - b->getScanRange(i)) < 0.1) ++agreed;
+	}
+	EXPECT_GT(compared, 120);
+	EXPECT_GE(agreed, compared - 2);
+}
+
+TEST(SimApp, CommittedSamplesAreRegeneratedBitForBit)
+{
+	// rawlog_samples/ must be what scripts/make-samples.sh produces from
+	// config_ini/sim-*.ini; if the simulator changed on purpose, rerun that script.
+	hslam::testing::CTempDir dir;
+	for (const std::string name : {"lab", "floor"})
+	{
+		ASSERT_EQ(simulate(sampleIni(name), dir.file(name), ""), 0) << readFile(dir.file(name + ".log"));
+		const std::string committed = std::string(HSLAM_SOURCE_DIR) + "/rawlog_samples/" + name + "/";
+		for (const char* f : {"sim.rawlog", "ground_truth.tum", "corners.csv", "waypoints.csv"})
+			EXPECT_TRUE(readFile(dir.file(name + "/" + f)) == readFile(committed + f))
+				<< name << "/" << f << " differs from the committed sample: run scripts/make-samples.sh";
+	}
 }
 
 TEST(SimApp, BadConfigAndSceneGiveClearErrors)

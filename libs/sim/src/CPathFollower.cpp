@@ -1,4 +1,5 @@
 /* hslam sim: CPathFollower and CVelocityScript. */
+#include <hslam/common/parse_number.h>
 #include <hslam/sim/CPathFollower.h>
 #include <mrpt/math/wrap2pi.h>
 
@@ -83,19 +84,10 @@ std::vector<std::vector<double>> parseGroups(const std::string& text, const std:
 		std::string tok;
 		while (is >> tok)
 		{
-			size_t used = 0;
-			double v = 0;
-			try
-			{
-				v = std::stod(tok, &used);
-			}
-			catch (const std::exception&)
-			{
-				used = 0;
-			}
-			if (used != tok.size() || !std::isfinite(v))
+			const auto v = hslam::common::tryParseDouble(tok);
+			if (!v)
 				throw std::runtime_error(what + ": item " + std::to_string(index) + ": '" + tok + "' is not a number");
-			nums.push_back(v);
+			nums.push_back(*v);
 		}
 		if (nums.empty()) continue;
 		if (nums.size() != perGroup)

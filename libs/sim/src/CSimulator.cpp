@@ -52,6 +52,15 @@ TScene loadScene(const TWorldOptions& w, const std::string& baseDir)
 	return scene;
 }
 
+namespace
+{
+std::mt19937_64 seededStream(int seed, unsigned source)
+{
+	std::seed_seq seq{static_cast<unsigned>(seed), source};
+	return std::mt19937_64(seq);
+}
+}  // namespace
+
 CSimulator::CSimulator(const TSimulatorConfig& config, TScene scene)
 	: m_cfg(config),
 	  m_scene(std::move(scene)),
@@ -59,7 +68,10 @@ CSimulator::CSimulator(const TSimulatorConfig& config, TScene scene)
 			  mrpt::math::TPose2D{config.robot.start_x_m, config.robot.start_y_m, config.robot.start_yaw_rad}),
 	  m_laser(config.laser),
 	  m_sonar(config.sonar),
-	  m_rng(static_cast<uint64_t>(config.simulation.seed))
+	  m_rngRobot(seededStream(config.simulation.seed, 1)),
+	  m_rngLaser(seededStream(config.simulation.seed, 2)),
+	  m_rngSonar(seededStream(config.simulation.seed, 3)),
+	  m_rngCamera(seededStream(config.simulation.seed, 4))
 {
 	for (const auto& p : m_scene.people) m_people.emplace_back(p);
 	const auto& path = m_cfg.path;
@@ -77,8 +89,8 @@ CSimulator::CSimulator(const TSimulatorConfig& config, TScene scene)
 		if (segs.empty()) throw hslam::common::config_error("[path] commands: empty in mode = velocity");
 		m_script.emplace(segs);
 	}
-	else if (m_cfg.simulation.duration_s <= 0)
-		throw hslam::common::config_error("[simulation] duration_s: must be > 0 with [path] mode = external");
+	// mode = external: driven by setExternalCommand(); with duration_s = 0 the
+	// caller decides when to stop (done() only at max_duration_s).
 }
 
 std::vector<TPersonState> CSimulator::peopleNow() const
@@ -88,12 +100,18 @@ std::vector<TPersonState> CSimulator::peopleNow() const
 	return out;
 }
 
-TVelocityCommand CSimulator::controllerCommand()
+TVelocityCommand CSimulator::controllerCommand(ISimulationSink& sink)
 {
 	if (m_follower)
 	{
 		const auto& pose = m_cfg.path.follow == "odometry" ? m_robot.odometryPose() : m_robot.truePose();
+		const size_t before = m_follower->nextWaypoint();
 		const auto cmd = m_follower->command(pose);
+		if (m_follower->nextWaypoint() != before)
+		{
+			const TSimulationFrame frame = frameNow();
+			for (size_t k = before; k < m_follower->nextWaypoint(); ++k) sink.onWaypointReached(k, frame);
+		}
 		if (m_follower->finished() && m_pathEnded_s < 0) m_pathEnded_s = elapsed_s();
 		return cmd;
 	}
@@ -156,7 +174,7 @@ void CSimulator::emitSensors(ISimulationSink& sink)
 	{
 		mrpt::obs::CObservation2DRangeScan scan;
 		std::vector<TObjectTag> tags;
-		m_laser.simulate(m_scene.world, frame.true_pose, m_rng, scan, &tags);
+		m_laser.simulate(m_scene.world, frame.true_pose, m_rngLaser, scan, &tags);
 		scan.timestamp = stamp;
 		sink.onLaserScan(scan, tags, frame);
 	}
@@ -164,12 +182,12 @@ void CSimulator::emitSensors(ISimulationSink& sink)
 	{
 		mrpt::obs::CObservationRange sonar;
 		std::vector<TSonarEcho> echoes;
-		m_sonar.simulate(m_scene.world, frame.true_pose, m_rng, sonar, &echoes);
+		m_sonar.simulate(m_scene.world, frame.true_pose, m_rngSonar, sonar, &echoes);
 		sonar.timestamp = stamp;
 		sink.onSonar(sonar, echoes, frame);
 	}
 	if (cameraDue)
-		if (auto obs = m_camera->render(m_scene.world, frame.true_pose, m_rng))
+		if (auto obs = m_camera->render(m_scene.world, frame.true_pose, m_rngCamera))
 		{
 			obs->timestamp = stamp;
 			sink.onCamera(*obs, frame);
@@ -186,8 +204,8 @@ void CSimulator::step(ISimulationSink& sink)
 	}
 	m_scene.world.setDynamicCircles(std::move(legs));
 	emitSensors(sink);
-	const TVelocityCommand cmd = controllerCommand();
-	m_robot.step(cmd.v_mps, cmd.w_rad_s, m_cfg.simulation.physics_dt_s, m_rng);
+	const TVelocityCommand cmd = controllerCommand(sink);
+	m_robot.step(cmd.v_mps, cmd.w_rad_s, m_cfg.simulation.physics_dt_s, m_rngRobot);
 	++m_tick;
 }
 

@@ -17,6 +17,24 @@ std::vector<TSonarMount> p3dxFrontSonarRing()
 	return ring;
 }
 
+std::vector<TSonarMount> p3dxAllSonars()
+{
+	std::vector<TSonarMount> ring = p3dxFrontSonarRing();
+	const double rear[8][3] = {{-157, -136, -90}, {-203, -119, -130}, {-237, -78, -150}, {-255, -27, -170},
+							   {-255, 27, 170},	  {-237, 78, 150},	  {-203, 119, 130},	  {-157, 136, 90}};
+	for (const auto& t : rear) ring.push_back(TSonarMount{t[0] * 1e-3, t[1] * 1e-3, t[2] * M_PI / 180.0});
+	return ring;
+}
+
+std::vector<TSonarMount> p3dxSonarRing(const std::string& ring)
+{
+	return ring == "all16" ? p3dxAllSonars() : p3dxFrontSonarRing();
+}
+
+CSonarSimulator::CSonarSimulator(const TSonarOptions& options) : CSonarSimulator(options, p3dxSonarRing(options.ring))
+{
+}
+
 CSonarSimulator::CSonarSimulator(const TSonarOptions& options, std::vector<TSonarMount> ring)
 	: m_opts(options), m_ring(std::move(ring))
 {

@@ -1,4 +1,5 @@
 /* hslam sim: scene text parser, corner extraction and raster loaders. */
+#include <hslam/common/parse_number.h>
 #include <hslam/sim/scene.h>
 
 #include <mrpt/img/CImage.h>
@@ -44,18 +45,9 @@ class CLineError
 
 double parseNumber(const std::string& token, const CLineError& err)
 {
-	size_t used = 0;
-	double v = 0;
-	try
-	{
-		v = std::stod(token, &used);
-	}
-	catch (const std::exception&)
-	{
-		used = 0;
-	}
-	if (used != token.size() || !std::isfinite(v)) err.fail("'" + token + "' is not a finite number");
-	return v;
+	const auto v = hslam::common::tryParseDouble(token);
+	if (!v) err.fail("'" + token + "' is not a finite number");
+	return *v;
 }
 
 /** Adds a chain of walls (free on the left) and its corners. */

@@ -6,8 +6,10 @@
  * an external command) gives (v, w), the robot moves (CDiffDriveRobot), and
  * the sensors whose period is due (integer tick counts, no drift) produce
  * real MRPT observations, handed to an ISimulationSink together with the
- * ground truth of that instant. Deterministic: one std::mt19937_64 seeded from
- * [simulation] seed, used in a fixed order. No file I/O (the app writes). */
+ * ground truth of that instant. Deterministic: [simulation] seed seeds one
+ * std::mt19937_64 per noise source (robot motion, laser, sonar, camera; via
+ * std::seed_seq{seed, source}), each used in a fixed order, so changing a
+ * sensor's settings does not change the robot's true path. No file I/O (the app writes). */
 #pragma once
 
 #include <hslam/sim/CDiffDriveRobot.h>
@@ -63,7 +65,7 @@ struct TRobotOptions  //!< [robot]
 
 struct TPathOptions  //!< [path]
 {
-	std::string mode = "waypoints";  //!< waypoints | velocity | external
+	std::string mode = "waypoints";  //!< waypoints | velocity | external (setExternalCommand; stops at duration_s or max_duration_s)
 	std::string follow = "truth";  //!< pose the follower steers by: truth | odometry (UMBmark)
 	std::string waypoints;  //!< "x y; x y; ..." (m)
 	int repeat = 1;  //!< the waypoint list is driven this many times
@@ -159,6 +161,9 @@ class ISimulationSink
 	{
 	}
 	virtual void onCamera(const mrpt::obs::CObservation& obs, const TSimulationFrame& frame) {}
+	/** The waypoint follower reached waypoint `index` (of the repeated list);
+	 * with follow = odometry this is where UMBmark reads the true end pose. */
+	virtual void onWaypointReached(size_t index, const TSimulationFrame& frame) {}
 };
 
 class CSimulator
@@ -188,7 +193,7 @@ class CSimulator
 	std::vector<TPersonState> peopleNow() const;
 
    private:
-	TVelocityCommand controllerCommand();
+	TVelocityCommand controllerCommand(ISimulationSink& sink);
 	TSimulationFrame frameNow() const;
 	void emitSensors(ISimulationSink& sink);
 	long periodTicks(double rate_hz) const;
@@ -203,7 +208,7 @@ class CSimulator
 	std::optional<CVelocityScript> m_script;
 	std::shared_ptr<const ICameraModel> m_camera;
 	TVelocityCommand m_external;
-	std::mt19937_64 m_rng;
+	std::mt19937_64 m_rngRobot, m_rngLaser, m_rngSonar, m_rngCamera;
 	long m_tick = 0;
 	double m_pathEnded_s = -1;  //!< elapsed time the path/script ended (-1 = not yet)
 };

@@ -4,7 +4,9 @@
  * Ring geometry: the 8 front transducers of the P3-DX, mounting positions and
  * headings from Aria's p3dx-sh.p (relative to the centre of rotation, x forward,
  * y left): 0:(69,136,90) 1:(114,119,50) 2:(148,78,30) 3:(166,27,10)
- * 4:(166,-27,-10) 5:(148,-78,-30) 6:(114,-119,-50) 7:(69,-136,-90) (mm, deg).
+ * 4:(166,-27,-10) 5:(148,-78,-30) 6:(114,-119,-50) 7:(69,-136,-90) (mm, deg);
+ * optionally the rear ring 8-15 (ring = all16): (-157,-136,-90) (-203,-119,-130)
+ * (-237,-78,-150) (-255,-27,-170) (-255,27,170) (-237,78,150) (-203,119,130) (-157,136,90).
  *
  * Echo model (the effect thesis 4.3.5-4.3.6 works against): the cone (default
  * 30 deg) is sampled by rays every ray_step_deg. Each ray is traced with
@@ -39,6 +41,7 @@ namespace hslam::sim
 struct TSonarOptions
 {
 	bool enabled = true;
+	std::string ring = "front8";  //!< front8 (the thesis' front ring) | all16 (front + rear)
 	double cone_rad = 30.0 * M_PI / 180.0;  //!< full beam width (thesis/MobileSim ~30 deg)
 	double max_range_m = 5.0;  //!< Aria ArSonarDevice 5000 mm
 	double min_range_m = 0.1;  //!< echoes nearer than this are reported at this range (ring-down)
@@ -55,6 +58,7 @@ struct TSonarOptions
 	void visit(V& v)
 	{
 		v.flag("enabled", enabled);
+		v.choice("ring", ring, {"front8", "all16"});
 		v.degrees("cone_deg", cone_rad, 1.0, 90.0);
 		v.real("max_range_m", max_range_m, 0.5, 20.0);
 		v.real("min_range_m", min_range_m, 0.0, 1.0);
@@ -77,6 +81,10 @@ struct TSonarMount
 
 /** The P3-DX front ring (Aria p3dx-sh.p), indices 0..7 from left (+90 deg) to right (-90 deg). */
 std::vector<TSonarMount> p3dxFrontSonarRing();
+/** Front ring followed by the rear ring (indices 8..15, right-rear to left-rear). */
+std::vector<TSonarMount> p3dxAllSonars();
+/** The ring named by TSonarOptions::ring. */
+std::vector<TSonarMount> p3dxSonarRing(const std::string& ring);
 
 struct TSonarEcho
 {
@@ -90,7 +98,9 @@ class CSonarSimulator
 {
    public:
 	CSonarSimulator() : CSonarSimulator(TSonarOptions()) {}
-	explicit CSonarSimulator(const TSonarOptions& options, std::vector<TSonarMount> ring = p3dxFrontSonarRing());
+	/** Uses the ring named by options.ring. */
+	explicit CSonarSimulator(const TSonarOptions& options);
+	CSonarSimulator(const TSonarOptions& options, std::vector<TSonarMount> ring);
 
 	/** Noise-free first echo of one transducer at a world pose. */
 	TSonarEcho echo(const CWorld& world, const mrpt::math::TPose2D& sensorWorldPose) const;
