@@ -4,13 +4,17 @@
  * hslam-grabber can record without hardware. The robot moves as the client
  * commands (differential drive; with --sim-ini the simulator's P3-DX
  * kinematics with UMBmark odometry errors, thesis 4.1); sonars and laser see
- * the world: a simulator scene (libs/sim, --scene) or a rectangular room (--box).
+ * the world: a simulator scene (libs/sim, --scene) or a rectangular room (--box);
+ * with --scene and --sim-ini the simulator's sonar model (specular echoes,
+ * multipath) and laser noise too.
  * Runs until SIGINT/SIGTERM or --duration; --truth writes the true pose (TUM). */
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/hwdrivers/CArcosEmulator.h>
 #include <hslam/hwdrivers/CLms200Emulator.h>
 #include <hslam/common/options_io.h>
 #include <hslam/sim/CDiffDriveRobot.h>
+#include <hslam/sim/CLaserSimulator.h>
+#include <hslam/sim/CSonarSimulator.h>
 #include <hslam/sim/scene.h>
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/system/filesystem.h>
@@ -64,6 +68,47 @@ class CSimKinematics : public CEmulatorKinematics
 	std::mt19937_64 m_rng;
 };
 
+/** The simulator's sonar model (cone sampling, specular reflection beyond
+ * max_incidence, multipath, noise; thesis 4.3/4.6) on the emulator's sonars. */
+CArcosEmulator::TSonarModel simSonarModel(std::shared_ptr<const hslam::sim::CWorld> world,
+										  const hslam::sim::TSonarOptions& opts, unsigned seed)
+{
+	auto sonar = std::make_shared<hslam::sim::CSonarSimulator>(opts);
+	auto rng = std::make_shared<std::mt19937_64>(seed);
+	return [world, sonar, rng](const mrpt::poses::CPose2D& pose) {
+		mrpt::obs::CObservationRange obs;
+		sonar->simulate(*world, pose.asTPose(), *rng, obs);
+		std::vector<double> r(sonar->ring().size(), sonar->options().max_range_m);
+		for (const auto& m : obs.sensedData)
+			if (m.sensorID < r.size()) r[m.sensorID] = m.sensedDistance > 0 ? m.sensedDistance : sonar->options().max_range_m;
+		return r;
+	};
+}
+
+/** The simulator's laser model (exact rays, Gaussian noise) at whatever field
+ * of view and resolution the LMS200 client configured. */
+CLms200Emulator::TScanModel simLaserModel(std::shared_ptr<const hslam::sim::CWorld> world, double noise_std_m, unsigned seed)
+{
+	auto rng = std::make_shared<std::mt19937_64>(seed);
+	return [world, noise_std_m, rng](const mrpt::poses::CPose2D& laserPose, double fov, int n, double maxRange) {
+		hslam::sim::TLaserOptions lo;
+		lo.preset = "custom";
+		lo.fov_rad = fov;
+		lo.resolution_rad = fov / std::max(1, n - 1);
+		lo.max_range_m = maxRange;
+		lo.noise_std_m = noise_std_m;
+		lo.range_resolution_m = 0;  // the LMS emulator quantises to its cm/mm units
+		lo.x_m = lo.y_m = lo.yaw_rad = 0;  // laserPose is already the sensor's pose
+		const hslam::sim::CLaserSimulator laser(lo);
+		mrpt::obs::CObservation2DRangeScan scan;
+		laser.simulate(*world, laserPose.asTPose(), *rng, scan);
+		std::vector<double> r(static_cast<size_t>(n), maxRange);
+		for (size_t i = 0; i < r.size() && i < scan.getScanSize(); ++i)
+			r[i] = scan.getScanRangeValidity(i) ? scan.getScanRange(i) : maxRange;
+		return r;
+	};
+}
+
 std::vector<double> numbers(const std::string& text, size_t n, const std::string& what)
 {
 	std::istringstream is(text);
@@ -81,7 +126,7 @@ int main(int argc, char** argv)
 		TCLAP::CmdLine cmd("hslam-device-emulator: Pioneer ARCOS + SICK LMS200 emulators on pseudo-terminals/TCP", ' ', "1.0");
 		TCLAP::ValueArg<std::string> scene("", "scene", "simulator scene file (config_ini/sim-worlds/*.scene)", false, "", "file", cmd);
 		TCLAP::ValueArg<std::string> box("", "box", "rectangular room 'xmin ymin xmax ymax' (m) if no --scene", false, "-2 -3 6 3", "text", cmd);
-		TCLAP::ValueArg<std::string> simIni("", "sim-ini", "simulator INI whose [robot] section (UMBmark errors, noise, limits) drives the robot; default: error-free kinematics", false, "", "file", cmd);
+		TCLAP::ValueArg<std::string> simIni("", "sim-ini", "simulator INI (config_ini/sim-*.ini): [robot] kinematics with UMBmark errors drive the robot; with --scene also the [sonar] model (cone, specular, multipath, noise) and [laser] noise. Default: error-free kinematics, one exact ray per sonar/beam", false, "", "file", cmd);
 		TCLAP::ValueArg<std::string> start("", "start", "true start pose 'x_m y_m yaw_deg'", false, "0 0 0", "text", cmd);
 		TCLAP::ValueArg<std::string> pioneerPty("", "pioneer-pty", "symlink for the Pioneer's pseudo-terminal ('' = none)", false, "", "path", cmd);
 		TCLAP::ValueArg<int> pioneerTcp("", "pioneer-tcp", "loopback TCP port for the Pioneer (-1 = none, 0 = any)", false, -1, "port", cmd);
@@ -99,8 +144,12 @@ int main(int argc, char** argv)
 		if (!cmd.parse(argc, argv)) return 0;
 
 		std::shared_ptr<CEmulatorWorld> world;
+		std::shared_ptr<const hslam::sim::CWorld> simWorld;
 		if (!scene.getValue().empty())
-			world = std::make_shared<CSimWorldAdapter>(hslam::sim::loadSceneFile(scene.getValue()).world);
+		{
+			simWorld = std::make_shared<hslam::sim::CWorld>(hslam::sim::loadSceneFile(scene.getValue()).world);
+			world = std::make_shared<CSimWorldAdapter>(*simWorld);
+		}
 		else
 		{
 			const auto b = numbers(box.getValue(), 4, "--box");
@@ -118,16 +167,32 @@ int main(int argc, char** argv)
 		eo.garbage_rate = garbage.getValue();
 		eo.start_pose = mrpt::poses::CPose2D(s[0], s[1], s[2] * M_PI / 180.0);
 		std::shared_ptr<CEmulatorKinematics> kinematics;
+		CArcosEmulator::TSonarModel sonarModel;
+		CLms200Emulator::TScanModel scanModel;
 		if (!simIni.getValue().empty())
 		{
 			if (!mrpt::system::fileExists(simIni.getValue())) throw std::runtime_error("not found: " + simIni.getValue());
 			mrpt::config::CConfigFile simCfg(simIni.getValue());
+			// Only the model sections are read here; their other keys (start
+			// pose, rates, labels) belong to hslam-simulate.
 			hslam::sim::TDiffDriveOptions ro;
-			hslam::common::CSectionReader reader(simCfg, "robot");  // other [robot] keys belong to hslam-simulate
-			ro.visit(reader);
+			hslam::common::CSectionReader robotReader(simCfg, "robot");
+			ro.visit(robotReader);
 			kinematics = std::make_shared<CSimKinematics>(ro, eo.start_pose, 1);
+			if (simWorld)
+			{
+				hslam::sim::TSonarOptions so;
+				hslam::common::CSectionReader sonarReader(simCfg, "sonar");
+				so.visit(sonarReader);
+				sonarModel = simSonarModel(simWorld, so, 2);
+				hslam::sim::TLaserOptions lo;
+				hslam::common::CSectionReader laserReader(simCfg, "laser");
+				lo.visit(laserReader);
+				scanModel = simLaserModel(simWorld, lo.noise_std_m, 3);
+			}
 		}
 		CArcosEmulator pioneer(eo, world, kinematics);
+		if (sonarModel) pioneer.setSonarModel(sonarModel);
 		pioneer.start();
 
 		std::unique_ptr<CLms200Emulator> lms;
@@ -137,6 +202,7 @@ int main(int argc, char** argv)
 			lo.pty_link = lmsPty.getValue();
 			lo.scan_rate_hz = lmsRate.getValue();
 			lms = std::make_unique<CLms200Emulator>(lo, world, [&pioneer] { return pioneer.truePose(); });
+			if (scanModel) lms->setScanModel(scanModel);
 			lms->start();
 		}
 		std::signal(SIGINT, onSignal);

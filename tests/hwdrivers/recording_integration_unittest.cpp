@@ -352,3 +352,70 @@ TEST(RecordingIntegration, HslamGrabberStoppedBySigtermOrKilledLeavesAValidRawlo
 		EXPECT_GT(entries, odo);
 	}
 }
+
+TEST(RecordingIntegration, SimulatorModelsDriveTheEmulatedRobot)
+{
+	// --sim-ini: the simulator's P3-DX kinematics with UMBmark errors and wheel
+	// noise, its sonar model (30 deg cone, specular/multipath) and laser noise.
+	hslam::testing::CTempDir tmp;
+	const int port = 48100 + static_cast<int>(getpid() % 500);
+	const std::string ini = writeIni(tmp, port, false);
+	TWorldSetup world = labScene();
+	world.emulatorArgs.push_back("--sim-ini");
+	world.emulatorArgs.push_back(std::string(HSLAM_SOURCE_DIR) + "/config_ini/sim-lab.ini");
+	auto emu = startEmulators(tmp, world);
+	auto client = motionClient(port, 0.2, tmp.file("grabber.log"));
+	const std::string rawlog = tmp.file("simmodels.rawlog");
+	const int rc = hslam::testing::runCommand(std::string(HSLAM_BIN_DIR) + "/hslam-grabber '" + ini + "' --duration 4.5 -o '" +
+											  rawlog + "' > '" + tmp.file("grabber.log") + "' 2>&1");
+	client.join();
+	ASSERT_EQ(rc, 0) << readFile(tmp.file("grabber.log"));
+	EXPECT_EQ(emu->stop(SIGTERM), 0);
+	const TRecording r = readRecording(rawlog);
+	ASSERT_GE(r.odometry.size(), 30u);
+
+	// Odometry drifts from the truth (UMBmark + noise), but only a little.
+	const auto truth = hslam::common::readTumFile(tmp.file("truth.tum"));
+	ASSERT_FALSE(truth.empty());
+	const mrpt::poses::CPose2D recordedEnd = world.start + r.odometry.back()->odometry;
+	const double drift = (recordedEnd - mrpt::poses::CPose2D(truth.back().pose)).norm();
+	EXPECT_GT(r.odometry.back()->odometry.norm(), 0.4);
+	EXPECT_GT(drift, 1e-4);
+	EXPECT_LT(drift, 0.05);
+
+	// Sonar: most readings are the direct echo of the centre ray's wall, but
+	// the cone and the specular model make some differ (the point of the model).
+	std::map<mrpt::Clock::time_point, mrpt::poses::CPose2D> odoAt;
+	for (const auto& o : r.odometry) odoAt[o->timestamp] = o->odometry;
+	size_t near = 0, total = 0;
+	for (const auto& s : r.sonar)
+	{
+		if (!odoAt.count(s->timestamp)) continue;
+		const mrpt::poses::CPose2D robot = world.start + odoAt[s->timestamp];
+		for (const auto& m : s->sensedData)
+		{
+			const mrpt::poses::CPose2D sp = robot + mrpt::poses::CPose2D(m.sensorPose.x, m.sensorPose.y, m.sensorPose.yaw);
+			near += std::abs(m.sensedDistance - world.ray(sp.x(), sp.y(), sp.phi(), 5.0)) < 0.05;
+			++total;
+		}
+	}
+	ASSERT_GT(total, 200u);
+	EXPECT_GT(near, total / 3) << near << " of " << total;
+	EXPECT_LT(near, total) << "the sonar model should not be a single exact ray";
+
+	// Laser: noisy (1 cm) but centred on the world's ranges.
+	std::vector<double> errors;
+	for (const auto& s : r.laser)
+	{
+		const auto it = odoAt.lower_bound(s->timestamp);
+		if (it == odoAt.end()) continue;
+		const mrpt::poses::CPose2D lp = world.start + it->second + mrpt::poses::CPose2D(s->sensorPose.x(), 0, 0);
+		for (size_t i = 0; i < s->getScanSize(); i += 10)
+			if (s->getScanRangeValidity(i))
+				errors.push_back(std::abs(s->getScanRange(i) - world.ray(lp.x(), lp.y(), lp.phi() - M_PI / 2 + i * M_PI / 360.0, 8.0)));
+	}
+	ASSERT_GT(errors.size(), 500u);
+	std::nth_element(errors.begin(), errors.begin() + errors.size() / 2, errors.end());
+	EXPECT_LT(errors[errors.size() / 2], 0.03);  // median: noise + odometry drift + timing
+	EXPECT_GT(errors[errors.size() / 2], 0.001);  // not exact any more
+}

@@ -277,15 +277,23 @@ std::vector<uint8_t> CArcosEmulator::makeSip()
 	s.vel_right_raw = static_cast<int16_t>(std::lround((v + 0.5 * w * m_opts.wheel_base_m) * 1000.0));
 	s.battery_dV = static_cast<uint8_t>(std::lround(m_opts.battery_V * 10));
 	s.flags = m_motors ? 1 : 0;
-	if (m_sonarOn && m_world)
+	if (m_sonarOn && (m_world || m_sonarModel))
 	{
-		const int n = std::min<int>(m_opts.sonars_per_sip, static_cast<int>(m_sonarPoses.size()));
+		std::vector<double> ranges;
+		if (m_sonarModel)
+			ranges = m_sonarModel(truth);
+		else
+			for (const auto& sp0 : m_sonarPoses)
+			{
+				const mrpt::poses::CPose2D sp = truth + mrpt::poses::CPose2D(sp0);
+				ranges.push_back(m_world->rayRange_m(sp.x(), sp.y(), sp.phi(), m_opts.sonar_max_range_m));
+			}
+		const int n = std::min<int>(m_opts.sonars_per_sip, static_cast<int>(ranges.size()));
 		for (int k = 0; k < n; ++k)
 		{
-			const size_t i = m_nextSonar;
-			m_nextSonar = (m_nextSonar + 1) % m_sonarPoses.size();
-			const mrpt::poses::CPose2D sp = truth + mrpt::poses::CPose2D(m_sonarPoses[i]);
-			const double r = m_world->rayRange_m(sp.x(), sp.y(), sp.phi(), m_opts.sonar_max_range_m);
+			const size_t i = m_nextSonar % ranges.size();
+			m_nextSonar = (i + 1) % ranges.size();
+			const double r = std::min(ranges[i], m_opts.sonar_max_range_m);
 			s.sonars.push_back({static_cast<uint8_t>(i), static_cast<uint16_t>(std::lround(r * 1000.0))});
 		}
 	}

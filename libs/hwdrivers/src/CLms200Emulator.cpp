@@ -130,11 +130,19 @@ std::vector<uint8_t> CLms200Emulator::scanBody()
 	const mrpt::poses::CPose2D lp = m_pose() + m_opts.laser_pose;
 	const double unit_m = m_mm ? 0.001 : 0.01;
 	const unsigned overflow = m_mm ? 0x7FFF : 0x1FFF;
-	for (int i = 0; i < n; ++i)
+	std::vector<double> ranges;
+	if (m_scanModel)
+		ranges = m_scanModel(lp, m_fov_deg * M_PI / 180.0, n, m_opts.max_range_m);
+	else
+		for (int i = 0; i < n; ++i)
+		{
+			const double a = lp.phi() + (-0.5 * m_fov_deg + i * m_res_centideg / 100.0) * M_PI / 180.0;
+			ranges.push_back(m_world ? m_world->rayRange_m(lp.x(), lp.y(), a, m_opts.max_range_m) : m_opts.max_range_m);
+		}
+	ranges.resize(static_cast<size_t>(n), m_opts.max_range_m);
+	for (double r : ranges)
 	{
-		const double a = lp.phi() + (-0.5 * m_fov_deg + i * m_res_centideg / 100.0) * M_PI / 180.0;
-		const double r = m_world ? m_world->rayRange_m(lp.x(), lp.y(), a, m_opts.max_range_m) : m_opts.max_range_m;
-		const unsigned v = r >= m_opts.max_range_m ? overflow : static_cast<unsigned>(std::lround(r / unit_m));
+		const unsigned v = r >= m_opts.max_range_m ? overflow : static_cast<unsigned>(std::lround(std::max(0.0, r) / unit_m));
 		b.push_back(static_cast<uint8_t>(v & 0xFF));
 		b.push_back(static_cast<uint8_t>(v >> 8));
 	}

@@ -29,6 +29,7 @@
 #include <mrpt/poses/CPose2D.h>
 
 #include <atomic>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <random>
@@ -73,6 +74,12 @@ class CArcosEmulator
 				   std::shared_ptr<CEmulatorKinematics> kinematics = nullptr);
 	~CArcosEmulator();
 
+	/** Sonar model: ranges (m) of every sonar (index = sonar number) at a true
+	 * robot pose; >= sonar_max_range_m = no echo. Default (unset): one exact
+	 * ray per sonar from the sonar_poses in the world. Set before start(). */
+	using TSonarModel = std::function<std::vector<double>(const mrpt::poses::CPose2D& truePose)>;
+	void setSonarModel(TSonarModel model) { m_sonarModel = std::move(model); }
+
 	/** Opens the endpoints and starts the emulator thread; throws std::runtime_error. */
 	void start();
 	void stop();
@@ -112,6 +119,7 @@ class CArcosEmulator
 	TOptions m_opts;
 	std::shared_ptr<const CEmulatorWorld> m_world;
 	std::vector<mrpt::math::TPose2D> m_sonarPoses;
+	TSonarModel m_sonarModel;
 	CPseudoTerminal m_pty;
 	int m_listenFd = -1, m_tcpPort = -1;
 	std::vector<TClient> m_clients;

@@ -47,6 +47,13 @@ class CLms200Emulator
 	CLms200Emulator(const TOptions& options, std::shared_ptr<const CEmulatorWorld> world, TPoseSource robotPose);
 	~CLms200Emulator();
 
+	/** Scan model: ranges (m) of n beams from -fov/2 (right) to +fov/2 at the
+	 * laser's world pose; >= max_range_m = no echo. Default (unset): exact rays
+	 * in the world. Set before start(). */
+	using TScanModel =
+		std::function<std::vector<double>(const mrpt::poses::CPose2D& laserPose, double fov_rad, int n, double maxRange_m)>;
+	void setScanModel(TScanModel model) { m_scanModel = std::move(model); }
+
 	void start();
 	void stop();
 	std::string ptyPath() const { return m_pty.clientPath(); }
@@ -62,6 +69,7 @@ class CLms200Emulator
 	TOptions m_opts;
 	std::shared_ptr<const CEmulatorWorld> m_world;
 	TPoseSource m_pose;
+	TScanModel m_scanModel;
 	CPseudoTerminal m_pty;
 	std::thread m_thread;
 	std::atomic<bool> m_quit{false};
