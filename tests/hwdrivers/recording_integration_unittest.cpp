@@ -265,7 +265,7 @@ TEST(RecordingIntegration, MrptRawlogGrabberWithOurPlugin)
 	auto emu = startEmulators(tmp, world);
 	auto client = motionClient(port, 0.3, tmp.file("grabber.log"));
 	// MRPT's grabber stops on a key on its standard input.
-	const int rc = hslam::testing::runCommand("(sleep 6.5; echo q) | rawlog-grabber -p " + std::string(HSLAM_BINARY_DIR) +
+	const int rc = hslam::testing::runCommand("(sleep 5.5; echo q) | rawlog-grabber -p " + std::string(HSLAM_BINARY_DIR) +
 											  "/lib/libhslam-hwdrivers-plugin.so '" + ini + "' > '" + tmp.file("grabber.log") +
 											  "' 2>&1");
 	client.join();
@@ -286,7 +286,7 @@ TEST(RecordingIntegration, HslamGrabberRecordsEverythingUntilTheStop)
 	auto client = motionClient(port, 0.3, tmp.file("grabber.log"));
 	const std::string rawlog = tmp.file("ours.rawlog");
 	const auto t0 = mrpt::Clock::now();
-	const int rc = hslam::testing::runCommand(std::string(HSLAM_BIN_DIR) + "/hslam-grabber '" + ini + "' --duration 6 -o '" +
+	const int rc = hslam::testing::runCommand(std::string(HSLAM_BIN_DIR) + "/hslam-grabber '" + ini + "' --duration 5 -o '" +
 											  rawlog + "' --map-out '" + tmp.file("livemap") + "' > '" +
 											  tmp.file("grabber.log") + "' 2>&1");
 	const auto t1 = mrpt::Clock::now();
