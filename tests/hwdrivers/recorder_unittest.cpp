@@ -12,6 +12,8 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
 
+#include <fstream>
+
 using namespace hslam::hwdrivers;
 
 namespace
@@ -137,4 +139,25 @@ TEST(ShippedIni, PioneerSectionsLoad)
 	// The documented sonar ring is the P3-DX default.
 	EXPECT_EQ(parseSonarPoses(s.options().sonar_poses).size(), 8u);
 	EXPECT_NEAR(parseSonarPoses(s.options().sonar_poses)[3].phi, 10 * M_PI / 180, 1e-12);
+}
+
+TEST(HslamGrabber, BadConfigurationsFailWithAClearMessage)
+{
+	hslam::testing::CTempDir tmp;
+	const auto run = [&](const std::string& iniText, const std::string& expected) {
+		const std::string ini = tmp.file("bad.ini"), log = tmp.file("bad.log");
+		std::ofstream(ini) << iniText;
+		const int rc = hslam::testing::runCommand(std::string(HSLAM_BIN_DIR) + "/hslam-grabber '" + ini + "' --duration 1 -o '" +
+												  tmp.file("x.rawlog") + "' > '" + log + "' 2>&1");
+		std::ifstream f(log);
+		const std::string out((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+		EXPECT_NE(rc, 0) << iniText;
+		EXPECT_NE(out.find(expected), std::string::npos) << "expected '" << expected << "' in:\n" << out;
+	};
+	run("[global]\n[P]\ndriver = CNoSuchSensor\nprocess_rate = 10\n", "[P] driver = 'CNoSuchSensor'");
+	run("[global]\n[P]\nprocess_rate = 10\n", "[P] has no 'driver'");
+	run("[global]\nGRABBER_PERIOD_MS = fast\n[P]\ndriver = CPioneerSensor\nprocess_rate = 10\n", "GRABBER_PERIOD_MS");
+	run("[global]\n[P]\ndriver = CPioneerSensor\nprocess_rate = 10\nmax_v_mps = 7\n", "max_v_mps");
+	run("[global]\n[P]\ndriver = CPioneerSensor\nprocess_rate = 0\n", "process_rate");
+	run("[global]\n", "no sensor sections");
 }
