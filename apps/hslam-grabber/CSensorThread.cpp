@@ -4,6 +4,22 @@
 #include <chrono>
 #include <stdexcept>
 
+namespace
+{
+/** The readable part of an exception: MRPT wraps messages into a block with
+ * "Message:", "Location:" and a call stack; keep only the message line. */
+std::string shortMessage(const std::exception& e)
+{
+	const std::string full = mrpt::exception_to_str(e);
+	const auto pos = full.find("Message:");
+	if (pos == std::string::npos) return full;
+	std::string msg = full.substr(pos + 8);
+	msg = msg.substr(0, msg.find('\n'));
+	const auto first = msg.find_first_not_of(' ');
+	return first == std::string::npos ? full : msg.substr(first);
+}
+}  // namespace
+
 CSensorThread::CSensorThread(const mrpt::config::CConfigFileBase& cfg, const std::string& section, TSink sink)
 	: m_section(section), m_sink(std::move(sink))
 {
@@ -19,7 +35,7 @@ CSensorThread::CSensorThread(const mrpt::config::CConfigFileBase& cfg, const std
 	}
 	catch (const std::exception& e)
 	{
-		throw std::runtime_error("[" + section + "] " + mrpt::exception_to_str(e));
+		throw std::runtime_error("[" + section + "] " + shortMessage(e));
 	}
 	if (!(m_sensor->getProcessRate() > 0)) throw std::runtime_error("[" + section + "] process_rate must be > 0 (Hz)");
 }
@@ -65,7 +81,7 @@ void CSensorThread::run()
 	catch (const std::exception& e)
 	{
 		std::lock_guard<std::mutex> lk(m_mtx);
-		m_error = "[" + m_section + "] " + mrpt::exception_to_str(e);
+		m_error = "[" + m_section + "] " + shortMessage(e);
 		m_failed = true;
 	}
 	// Whatever the sensor queued before the stop or the failure.

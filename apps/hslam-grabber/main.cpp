@@ -227,7 +227,7 @@ int main(int argc, char** argv)
 	}
 	catch (const std::exception& e)
 	{
-		std::cerr << "hslam-grabber: " << mrpt::exception_to_str(e) << "\n";
+		std::cerr << "hslam-grabber: " << e.what() << "\n";
 		return 1;
 	}
 }
