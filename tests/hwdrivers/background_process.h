@@ -18,7 +18,10 @@
 class CBackgroundProcess
 {
    public:
-	CBackgroundProcess(const std::vector<std::string>& argv, const std::string& logPath) : m_log(logPath)
+	/** `stdinPath`: file or terminal opened as the child's standard input. */
+	CBackgroundProcess(const std::vector<std::string>& argv, const std::string& logPath,
+					   const std::string& stdinPath = "/dev/null")
+		: m_log(logPath)
 	{
 		m_pid = fork();
 		if (m_pid < 0) throw std::runtime_error("fork failed");
@@ -27,8 +30,9 @@ class CBackgroundProcess
 			const int fd = ::open(logPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
 			dup2(fd, 1);
 			dup2(fd, 2);
-			const int devnull = ::open("/dev/null", O_RDONLY);
-			dup2(devnull, 0);
+			setsid();  // own session: a terminal given as stdin can become its controlling tty
+			const int in = ::open(stdinPath.c_str(), O_RDWR);
+			dup2(in, 0);
 			std::vector<char*> args;
 			for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
 			args.push_back(nullptr);
