@@ -131,10 +131,9 @@ int main(int argc, char** argv)
 			if (!mapConfig.getValue().empty()) hslam::common::loadOptions(mapOutOpts, *mapCfg, "output");
 		}
 
-		CRecordingWriter writer(outPath, g.compress_level, g.use_sensoryframes, g.sf_max_time_span_s, hold.getValue());
-		writer.setPipeline(pipeline.get());
-
-		// Sensor sections (as rawlog-grabber: all but [global] and ignored ones).
+		// Sensor sections (as rawlog-grabber: all but [global] and ignored ones);
+		// the sensors only call the sink once started, after `writer` exists.
+		std::unique_ptr<CRecordingWriter> writer;
 		std::vector<std::string> sections;
 		cfg.getAllSections(sections);
 		std::vector<std::unique_ptr<CSensorThread>> threads;
@@ -142,9 +141,13 @@ int main(int argc, char** argv)
 		{
 			if (sec == "global" || cfg.read_bool(sec, "rawlog-grabber-ignore", false)) continue;
 			threads.push_back(std::make_unique<CSensorThread>(
-				cfg, sec, [&writer](mrpt::hwdrivers::CGenericSensor::TListObservations&& o) { writer.add(std::move(o)); }));
+				cfg, sec, [&writer](mrpt::hwdrivers::CGenericSensor::TListObservations&& o) { writer->add(std::move(o)); }));
 		}
 		if (threads.empty()) throw std::runtime_error(ini.getValue() + ": no sensor sections");
+		// The output is created only once the configuration is known to be good.
+		writer = std::make_unique<CRecordingWriter>(outPath, g.compress_level, g.use_sensoryframes, g.sf_max_time_span_s,
+												   hold.getValue());
+		writer->setPipeline(pipeline.get());
 
 		std::signal(SIGINT, onSignal);
 		std::signal(SIGTERM, onSignal);
@@ -188,20 +191,20 @@ int main(int argc, char** argv)
 			if (duration.getValue() > 0 && std::chrono::duration<double>(now - t0).count() >= duration.getValue()) break;
 			if (now >= nextWrite)
 			{
-				writer.writeDue();
+				writer->writeDue();
 				nextWrite = now + std::chrono::milliseconds(g.grabber_period_ms);
 			}
 		}
 		const double stopTime = mrpt::Clock::toDouble(mrpt::Clock::now());
 		for (auto& t : threads) t->stop();
-		writer.finish();
+		writer->finish();
 		const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 		const double cpu = cpuSeconds() - cpu0;
 		threads.clear();
 
-		std::cout << "hslam-grabber: wrote " << writer.objectsWritten() << " objects (" << writer.observationsWritten()
+		std::cout << "hslam-grabber: wrote " << writer->objectsWritten() << " objects (" << writer->observationsWritten()
 				  << " observations) to " << outPath << " in " << std::fixed << std::setprecision(2) << wall << " s\n";
-		for (const auto& [label, st] : writer.labelStats())
+		for (const auto& [label, st] : writer->labelStats())
 		{
 			const double span = st.last_s - st.first_s;
 			std::cout << "  " << std::setw(12) << (label.empty() ? "(no label)" : label) << ": " << st.count << " obs, "
@@ -214,9 +217,9 @@ int main(int argc, char** argv)
 			std::cout << "  live map: " << pipeline->counters().laser_scans << " scans mapped, " << files.size()
 					  << " files in " << mapOut.getValue() << "\n";
 		}
-		std::cout << "objects=" << writer.objectsWritten() << "\nobservations=" << writer.observationsWritten()
+		std::cout << "objects=" << writer->objectsWritten() << "\nobservations=" << writer->observationsWritten()
 				  << "\nwall_s=" << wall << "\ncpu_s=" << cpu << "\ncpu_percent=" << 100.0 * cpu / std::max(wall, 1e-9)
-				  << "\nobservations_per_s=" << writer.observationsWritten() / std::max(wall, 1e-9) << "\n"
+				  << "\nobservations_per_s=" << writer->observationsWritten() / std::max(wall, 1e-9) << "\n"
 				  << std::setprecision(6) << "stop_time=" << stopTime << "\n";
 		if (!failure.empty())
 		{

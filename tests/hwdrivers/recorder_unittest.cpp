@@ -12,6 +12,7 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/obs/CObservationOdometry.h>
 
+#include <filesystem>
 #include <fstream>
 
 using namespace hslam::hwdrivers;
@@ -153,6 +154,7 @@ TEST(HslamGrabber, BadConfigurationsFailWithAClearMessage)
 		const std::string out((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
 		EXPECT_NE(rc, 0) << iniText;
 		EXPECT_NE(out.find(expected), std::string::npos) << "expected '" << expected << "' in:\n" << out;
+		EXPECT_FALSE(std::filesystem::exists(tmp.file("x.rawlog"))) << "no output file for a bad configuration";
 	};
 	run("[global]\n[P]\ndriver = CNoSuchSensor\nprocess_rate = 10\n", "[P] driver = 'CNoSuchSensor'");
 	run("[global]\n[P]\nprocess_rate = 10\n", "[P] has no 'driver'");
