@@ -442,25 +442,28 @@ mrpt_ini() {
 	python3 - "$stock" "$dst" "$@" <<'PY'
 import re, sys
 stock, dst, kvs = sys.argv[1], sys.argv[2], dict(a.split("=", 1) for a in sys.argv[3:])
-lines, section, seen, out = open(stock).read().splitlines(), None, set(), []
-def flush_missing():
-    for k, v in kvs.items():
-        if k not in seen:
-            out.append("%s=%s   // set by compare-carmen.sh" % (k, v)); seen.add(k)
-for line in lines:
+text = open(stock, newline="").read()
+eol = "\r\n" if "\r\n" in text else "\n"   # keep the stock file's line endings
+section, out, seen, header_at = None, [], set(), None
+for line in text.splitlines():
     m = re.match(r"\s*\[(.+)\]", line)
     if m:
-        if section == "MappingApplication": flush_missing()
         section = m.group(1).strip()
+        if section == "MappingApplication":
+            header_at = len(out)
     elif section == "MappingApplication":
         m = re.match(r"\s*([A-Za-z_0-9]+)\s*=", line)
         if m and m.group(1) in kvs:
-            line = "%s=%s   // changed by compare-carmen.sh (stock: %s)" % (m.group(1), kvs[m.group(1)], line.split("=", 1)[1].strip())
+            stock_value = line.split("=", 1)[1].strip()
+            line = "%s=%s   // changed by compare-carmen.sh (stock: %s)" % (m.group(1), kvs[m.group(1)], stock_value)
             seen.add(m.group(1))
     out.append(line)
-if section == "MappingApplication": flush_missing()
-if len(seen) != len(kvs): sys.exit("mrpt_ini: no [MappingApplication] section in " + stock)
-open(dst, "w").write("\n".join(out) + "\n")
+if header_at is None:
+    sys.exit("mrpt_ini: no [MappingApplication] section in " + stock)
+missing = ["%s=%s   // added by compare-carmen.sh" % (k, v) for k, v in kvs.items() if k not in seen]
+out[header_at + 1:header_at + 1] = missing   # right below the section header
+with open(dst, "w", newline="") as f:
+    f.write(eol.join(out) + eol)
 PY
 }
 

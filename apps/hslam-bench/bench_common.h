@@ -83,4 +83,7 @@ std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> readScans(const std::string
  * holding sim.rawlog, ground_truth.tum, people.csv.gz, beam_labels.csv.gz. */
 int runLegsSimSuite(const std::string& dataDir, const std::string& outDir, const std::string& configFile);
 
+/** ARCOS parser, driver and recorders against the emulators (bench_hwdrivers.cpp). */
+int runHwdriversSuite(int repetitions);
+
 }  // namespace hslam::bench

@@ -7,6 +7,7 @@
  *   hslam-bench sonar [--repetitions N]     (simulated runs; images into ./hslam-bench-sonar/)
  *   hslam-bench legs --data DIR [--out DIR] [--config FILE]
  *   hslam-bench legs-sim [--data rawlog_samples] [--out DIR] [--config FILE]
+ *   hslam-bench hwdrivers [--repetitions N]
  */
 #include "bench_common.h"
 
@@ -16,9 +17,9 @@
 
 int main(int argc, char** argv)
 {
-	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, lines, sonar, legs, legs-sim)", ' ', "0.1");
-	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid, lines, sonar, legs, legs-sim", true, "",
-												"suite", cmd);
+	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, lines, sonar, legs, legs-sim, hwdrivers)", ' ', "0.1");
+	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid, lines, sonar, legs, legs-sim, hwdrivers",
+												true, "", "suite", cmd);
 	TCLAP::MultiArg<std::string> rawlogs("r", "rawlog",
 										 "rawlog(s) with laser scans and odometry (default: MRPT's sample rawlog)",
 										 false, "file", cmd);
@@ -42,7 +43,9 @@ int main(int argc, char** argv)
 		if (suite.getValue() == "legs-sim")
 			return hslam::bench::runLegsSimSuite(data.isSet() ? data.getValue() : "rawlog_samples", out.getValue(),
 												 config.getValue());
-		std::cerr << "hslam-bench: unknown suite '" << suite.getValue() << "' (available: grid, lines, sonar, legs, legs-sim)\n";
+		if (suite.getValue() == "hwdrivers") return hslam::bench::runHwdriversSuite(std::max(1, repetitions.getValue()));
+		std::cerr << "hslam-bench: unknown suite '" << suite.getValue()
+				  << "' (available: grid, lines, sonar, legs, legs-sim, hwdrivers)\n";
 		return 1;
 	}
 	catch (const TCLAP::ArgException& e)
