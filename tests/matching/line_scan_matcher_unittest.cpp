@@ -43,6 +43,7 @@ struct TCase
 {
 	const char* name;
 	CPose2D motion;  // true pose of the second scan in the first scan's frame
+	friend void PrintTo(const TCase& c, std::ostream* os) { *os << c.name << ' ' << c.motion; }
 };
 
 class LineScanMatcherCases : public ::testing::TestWithParam<TCase>
