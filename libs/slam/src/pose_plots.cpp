@@ -46,7 +46,20 @@ void drawPanelFrame(mrpt::img::CImage& img, const TPanel& p, const std::string& 
 	}
 	img.rectangle(p.left, p.py(p.v1), p.right, p.py(p.v0), kAxes, 1);
 	img.textOut(p.left + 6, p.top + 2, title, kAxes);
-	img.textOut(p.right - 90, p.py(p.v0) + 4, "t = " + formatNumber(p.t1 - p.t0) + " s", kAxes);
+	img.textOut(p.right - 160, p.py(p.v0) + 4, "0 .. " + formatNumber(p.t1 - p.t0) + " s", kAxes);
+}
+
+/** Continuous angle sequence (deg): removes the +-180 jumps so a plot shows turns, not wraps. */
+std::vector<double> unwrappedDegrees(const std::vector<double>& wrappedRad)
+{
+	std::vector<double> out;
+	double offset = 0;
+	for (size_t i = 0; i < wrappedRad.size(); ++i)
+	{
+		if (i > 0) offset += fusion::wrapToPi(wrappedRad[i] - wrappedRad[i - 1]) - (wrappedRad[i] - wrappedRad[i - 1]);
+		out.push_back((wrappedRad[i] + offset) * 180.0 / M_PI);
+	}
+	return out;
 }
 
 /** Range of the values (and value +- sigma) with a small margin. */
@@ -65,32 +78,40 @@ std::pair<double, double> valueRange(const std::vector<double>& a, const std::ve
 mrpt::img::CImage renderPosePlot(const std::vector<CMappingPipeline::TTimedEstimate>& estimates,
 								 const common::TTrajectory2D& odometry, int widthPx, int panelHeightPx)
 {
-	mrpt::img::CImage img(widthPx, 3 * panelHeightPx, mrpt::img::CH_RGB);
-	img.filledRectangle(0, 0, widthPx - 1, 3 * panelHeightPx - 1, kBackground);
+	constexpr int kPanels = 4;
+	mrpt::img::CImage img(widthPx, kPanels * panelHeightPx, mrpt::img::CH_RGB);
+	img.filledRectangle(0, 0, widthPx - 1, kPanels * panelHeightPx - 1, kBackground);
 	if (estimates.empty()) return img;
-	std::vector<double> t, odoT;
-	for (const auto& e : estimates) t.push_back(e.t_s);
-	for (const auto& o : odometry) odoT.push_back(o.t_s);
+	std::vector<double> t, odoT, phi, odoPhi;
+	for (const auto& e : estimates) t.push_back(e.t_s), phi.push_back(e.estimate.pose.phi());
+	for (const auto& o : odometry) odoT.push_back(o.t_s), odoPhi.push_back(o.pose.phi);
+	const std::vector<double> phiDeg = unwrappedDegrees(phi), odoPhiDeg = unwrappedDegrees(odoPhi);
 	const double t0 = t.front(), t1 = std::max(t.back(), t0 + 1e-3);
-	const char* titles[3] = {"x (m): estimate (red) +-1 sigma (pink), odometry (orange)", "y (m)", "theta (deg)"};
-	for (int k = 0; k < 3; ++k)
-	{
-		const double scale = k == 2 ? 180.0 / M_PI : 1.0;
-		std::vector<double> v, s, lo, hi, odo;
-		for (const auto& e : estimates)
-		{
-			const double value = k == 0 ? e.estimate.pose.x() : k == 1 ? e.estimate.pose.y() : e.estimate.pose.phi();
-			v.push_back(value * scale);
-			s.push_back(std::sqrt(std::max(0.0, e.estimate.covariance(k, k))) * scale);
-			lo.push_back(v.back() - s.back());
-			hi.push_back(v.back() + s.back());
-		}
-		for (const auto& o : odometry) odo.push_back((k == 0 ? o.pose.x : k == 1 ? o.pose.y : o.pose.phi) * scale);
+	const auto panel = [&](int k) {
 		TPanel p;
 		p.top = k * panelHeightPx;
 		p.height = panelHeightPx;
 		p.right = widthPx - 10;
 		p.t0 = t0, p.t1 = t1;
+		return p;
+	};
+	const char* titles[3] = {"x (m): estimate (red) +-1 sigma (pink), odometry (orange)", "y (m)",
+							 "theta (deg, unwrapped)"};
+	for (int k = 0; k < 3; ++k)
+	{
+		std::vector<double> v, s, lo, hi, odo;
+		for (size_t i = 0; i < estimates.size(); ++i)
+		{
+			const auto& e = estimates[i].estimate;
+			const double scale = k == 2 ? 180.0 / M_PI : 1.0;
+			v.push_back(k == 0 ? e.pose.x() : k == 1 ? e.pose.y() : phiDeg[i]);
+			s.push_back(std::sqrt(std::max(0.0, e.covariance(k, k))) * scale);
+			lo.push_back(v.back() - s.back());
+			hi.push_back(v.back() + s.back());
+		}
+		for (size_t i = 0; i < odometry.size(); ++i)
+			odo.push_back(k == 0 ? odometry[i].pose.x : k == 1 ? odometry[i].pose.y : odoPhiDeg[i]);
+		TPanel p = panel(k);
 		std::tie(p.v0, p.v1) = valueRange(v, odo, s);
 		drawPanelFrame(img, p, titles[k]);
 		drawSeries(img, p, t, lo, kSigma);
@@ -98,6 +119,20 @@ mrpt::img::CImage renderPosePlot(const std::vector<CMappingPipeline::TTimedEstim
 		drawSeries(img, p, odoT, odo, kOdometry);
 		drawSeries(img, p, t, v, kEstimate);
 	}
+	// Standard deviations themselves (thesis figures 117-127 plot the covariances).
+	std::vector<double> sxy, sth, zero;
+	for (const auto& e : estimates)
+	{
+		sxy.push_back(100.0 * std::sqrt(std::max({0.0, e.estimate.covariance(0, 0), e.estimate.covariance(1, 1)})));
+		sth.push_back(180.0 / M_PI * std::sqrt(std::max(0.0, e.estimate.covariance(2, 2))));
+		zero.push_back(0.0);
+	}
+	TPanel p = panel(3);
+	std::tie(p.v0, p.v1) = valueRange(sxy, sth, zero);
+	p.v0 = 0;
+	drawPanelFrame(img, p, "std: position (cm, red), heading (deg, blue)");
+	drawSeries(img, p, t, sxy, kEstimate);
+	drawSeries(img, p, t, sth, mrpt::img::TColor(30, 60, 220));
 	return img;
 }
 
