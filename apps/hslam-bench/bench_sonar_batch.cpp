@@ -85,7 +85,7 @@ mrpt::maps::COccupancyGridMap2D loadGridmap(const std::string& path)
 
 struct TTotals
 {
-	size_t laserAgreed = 0, laserCompared = 0, fusedAgreed = 0, fusedCompared = 0;
+	size_t laserAgreed = 0, laserCompared = 0, fusedAgreed = 0, fusedCompared = 0, laserKnown = 0, fusedKnown = 0;
 	size_t cornersFound = 0, cornersNear = 0;
 };
 
@@ -156,8 +156,10 @@ int runSonarBatchSuite(const std::string& dataDir)
 		{
 			const auto a = maps::compareWithMrptGrid(r.pipeline->grid(), truthGrid);
 			printRow(sample, r.name, a, stageMean(r.pipeline->timer(), "sonar_update"));
-			if (&r == &runs[0]) totals.laserAgreed += a.agreed, totals.laserCompared += a.compared;
-			if (&r == &runs[1]) totals.fusedAgreed += a.agreed, totals.fusedCompared += a.compared;
+			if (&r == &runs[0])
+				totals.laserAgreed += a.agreed, totals.laserCompared += a.compared, totals.laserKnown += a.ours_known;
+			if (&r == &runs[1])
+				totals.fusedAgreed += a.agreed, totals.fusedCompared += a.compared, totals.fusedKnown += a.ours_known;
 		}
 		const auto& fused = *runs[1].pipeline;
 		printRow(sample, "sonar only (fast, w=1)", maps::compareWithMrptGrid(*fused.sonarOnlyMap(), truthGrid), 0.0);
@@ -213,6 +215,8 @@ int runSonarBatchSuite(const std::string& dataDir)
 			  << costTable.str();
 	std::cout << "\nsonar_batch_laser_only_agreement=" << static_cast<double>(totals.laserAgreed) / totals.laserCompared
 			  << "\nsonar_batch_fused_agreement=" << static_cast<double>(totals.fusedAgreed) / totals.fusedCompared
+			  << "\nsonar_batch_laser_only_known_agreement=" << static_cast<double>(totals.laserAgreed) / totals.laserKnown
+			  << "\nsonar_batch_fused_known_agreement=" << static_cast<double>(totals.fusedAgreed) / totals.fusedKnown
 			  << "\nsonar_batch_tbf_precision_0_3m="
 			  << (totals.cornersFound ? static_cast<double>(totals.cornersNear) / totals.cornersFound : 0.0)
 			  << "\n";

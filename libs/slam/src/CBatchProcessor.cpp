@@ -129,7 +129,8 @@ void CBatchProcessor::printSummary(const CMappingPipeline& pipeline, const TBatc
 		  << "trajectory.tum, odometry.tum, timing.csv, config_used.ini"
 		  << (pipeline.dynamicFilter() ? ", tracks.csv" : "")
 		  << (pipeline.sonarStage().tbfOptions().enabled ? ", sonar_corners.csv, map_sonar_corners.png" : "")
-		  << (pipeline.laserOnlyMap() ? ", map_laser_only.png, map_sonar_only.png" : "") << ")\n";
+		  << (pipeline.laserOnlyMap() ? ", map_laser_only.png" : "")
+		  << (pipeline.sonarOnlyMap() ? ", map_sonar_only.png" : "") << ")\n";
 	if (!result.input_error.empty())
 		m_err << "error: " << result.input_error << "\n"
 			  << "       results for the " << c.entries << " entries read before the fault were written.\n";
