@@ -61,6 +61,9 @@ size_t mrptGridBytes(const mrpt::maps::COccupancyGridMap2D& grid);
 int runGridSuite(const std::vector<std::string>& rawlogs, int repetitions);
 /** Sonar models, TBF and laser tiled-vs-MRPT on simulated runs; images into `outDir`. */
 int runSonarSuite(int repetitions, const std::string& outDir);
+/** The sonar stage of the batch job on the simulated samples under dataDir
+ * (bench_sonar_batch.cpp): map agreement with and without sonar, TBF corners. */
+int runSonarBatchSuite(const std::string& dataDir);
 
 /** Line extractors on thesis table 3 scenes and real scans (bench_lines.cpp);
  * `logs` empty: ../shared/datasets/carmen/{intel,aces,csail}-corrected.log.gz

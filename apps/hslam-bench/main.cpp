@@ -5,6 +5,7 @@
  *   hslam-bench grid [--rawlog FILE ...] [--repetitions N]
  *   hslam-bench lines [--rawlog FILE|CARMEN.log.gz ...] [--repetitions N]
  *   hslam-bench sonar [--repetitions N]     (simulated runs; images into ./hslam-bench-sonar/)
+ *   hslam-bench sonar-batch [--data rawlog_samples]   (sonar in the batch job vs ground truth)
  *   hslam-bench legs --data DIR [--out DIR] [--config FILE]
  *   hslam-bench legs-sim [--data rawlog_samples] [--out DIR] [--config FILE]
  *   hslam-bench hwdrivers [--repetitions N]
@@ -17,8 +18,8 @@
 
 int main(int argc, char** argv)
 {
-	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, lines, sonar, legs, legs-sim, hwdrivers)", ' ', "0.1");
-	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid, lines, sonar, legs, legs-sim, hwdrivers",
+	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers)", ' ', "0.1");
+	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers",
 												true, "", "suite", cmd);
 	TCLAP::MultiArg<std::string> rawlogs("r", "rawlog",
 										 "rawlog(s) with laser scans and odometry (default: MRPT's sample rawlog)",
@@ -39,13 +40,15 @@ int main(int argc, char** argv)
 		if (inputs.empty()) inputs.push_back(hslam::bench::kMrptSampleRawlog);
 		if (suite.getValue() == "grid") return hslam::bench::runGridSuite(inputs, std::max(1, repetitions.getValue()));
 		if (suite.getValue() == "sonar") return hslam::bench::runSonarSuite(std::max(1, repetitions.getValue()), "hslam-bench-sonar");
+		if (suite.getValue() == "sonar-batch")
+			return hslam::bench::runSonarBatchSuite(data.isSet() ? data.getValue() : "rawlog_samples");
 		if (suite.getValue() == "legs") return hslam::bench::runLegsSuite(data.getValue(), out.getValue(), config.getValue());
 		if (suite.getValue() == "legs-sim")
 			return hslam::bench::runLegsSimSuite(data.isSet() ? data.getValue() : "rawlog_samples", out.getValue(),
 												 config.getValue());
 		if (suite.getValue() == "hwdrivers") return hslam::bench::runHwdriversSuite(std::max(1, repetitions.getValue()));
 		std::cerr << "hslam-bench: unknown suite '" << suite.getValue()
-				  << "' (available: grid, lines, sonar, legs, legs-sim, hwdrivers)\n";
+				  << "' (available: grid, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers)\n";
 		return 1;
 	}
 	catch (const TCLAP::ArgException& e)

@@ -254,13 +254,5 @@ TEST(TiledMap, MrptCreatesTheMapFromTheShippedIni)
 	EXPECT_EQ(map->optionsAsIni(), CTiledOccupancyGridMap2D().optionsAsIni());
 }
 
-TEST(TiledMap, DefaultIniSonarSectionMatchesTheOptions)
-{
-	mrpt::config::CConfigFile cfg(std::string(HSLAM_SOURCE_DIR) + "/config_ini/hslam-default.ini");
-	CSonarGridInserter::TOptions o;
-	hslam::common::loadOptions(o, cfg, "sonar_model");  // throws on undocumented / unknown keys
-	mrpt::config::CConfigFileMemory a, b;
-	hslam::common::saveOptions(o, a, "s");
-	hslam::common::saveOptions(CSonarGridInserter::TOptions(), b, "s");
-	EXPECT_EQ(a.getContent(), b.getContent());  // the file documents the defaults
-}
+// The default INI's [sonar_model] (with the pipeline's `enabled` switch) is
+// checked against the options in tests/slam (SonarInBatch.DefaultIniDocumentsTheSonarSections).

@@ -214,13 +214,5 @@ TEST(TbfCornerDetector, OptionsFromIni)
 	EXPECT_THROW(hslam::common::loadOptions(o, cfg, "tbf"), hslam::common::config_error);
 }
 
-TEST(TbfCornerDetector, DefaultIniSectionMatchesTheOptions)
-{
-	mrpt::config::CConfigFile cfg(std::string(HSLAM_SOURCE_DIR) + "/config_ini/hslam-default.ini");
-	CTbfCornerDetector::TOptions o;
-	hslam::common::loadOptions(o, cfg, "tbf");
-	mrpt::config::CConfigFileMemory a, b;
-	hslam::common::saveOptions(o, a, "s");
-	hslam::common::saveOptions(CTbfCornerDetector::TOptions(), b, "s");
-	EXPECT_EQ(a.getContent(), b.getContent());
-}
+// The default INI's [tbf] (with the pipeline's `enabled`, `min_support`) is
+// checked against the options in tests/slam (SonarInBatch.DefaultIniDocumentsTheSonarSections).

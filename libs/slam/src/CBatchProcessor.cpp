@@ -26,9 +26,6 @@ std::vector<std::string> CBatchProcessor::knownSections()
 {
 	auto sections = CMappingPipeline::sections();
 	sections.push_back("output");
-	// Documented in hslam-default.ini for the sonar components (libs/maps
-	// CSonarGridInserter, libs/sonar CTbfCornerDetector); not used here yet.
-	sections.insert(sections.end(), {"sonar_model", "tbf"});
 	return sections;
 }
 
@@ -39,6 +36,7 @@ TBatchResult CBatchProcessor::run()
 	CMappingPipeline pipeline(cfg);
 	TOutputOptions outputOptions;
 	common::loadOptions(outputOptions, cfg, "output");
+	if (outputOptions.write_sensor_maps) pipeline.keepSensorMaps();
 	if (outputOptions.dynamic_debug_images)
 		pipeline.keepDynamicDebugFrames(static_cast<size_t>(outputOptions.dynamic_debug_max_images));
 	std::filesystem::create_directories(m_request.output_dir);
@@ -116,14 +114,23 @@ void CBatchProcessor::printSummary(const CMappingPipeline& pipeline, const TBatc
 		  << "Entries read:     " << c.entries << "\n"
 		  << "Laser scans used: " << c.laser_scans << " (ignored by label: " << c.laser_scans_ignored << ")\n"
 		  << "Odometry:         " << c.odometry_readings << " readings, " << c.odometry_gaps << " gaps\n"
-		  << "Tiles:            " << pipeline.grid().tileCount() << " (" << pipeline.grid().memoryBytes() / 1024
+		  << "Sonar rings used: " << c.sonar_observations << " (ignored: " << c.sonar_observations_ignored
+		  << "), readings inserted into the grid: " << c.sonar_readings_inserted
+		  << (pipeline.sonarStage().mappingOptions().enabled ? "" : " ([sonar_model] enabled = false)") << "\n";
+	if (pipeline.sonarStage().tbfOptions().enabled)
+		m_out << "TBF sonar corners: " << pipeline.sonarStage().corners().size() << " with support >= "
+			  << pipeline.sonarStage().tbfOptions().min_support << "\n";
+	m_out << "Tiles:            " << pipeline.grid().tileCount() << " (" << pipeline.grid().memoryBytes() / 1024
 		  << " KiB)\n";
 	printMatchSummary(pipeline);
 	m_out << "\nTiming per call:\n";
 	pipeline.timer().printTable(m_out);
 	m_out << "\nResults written to " << m_request.output_dir << "/ (map.png, tiles/, map.gridmap.gz, "
 		  << "trajectory.tum, odometry.tum, timing.csv, config_used.ini"
-		  << (pipeline.dynamicFilter() ? ", tracks.csv" : "") << ")\n";
+		  << (pipeline.dynamicFilter() ? ", tracks.csv" : "")
+		  << (pipeline.sonarStage().tbfOptions().enabled ? ", sonar_corners.csv, map_sonar_corners.png" : "")
+		  << (pipeline.laserOnlyMap() ? ", map_laser_only.png" : "")
+		  << (pipeline.sonarOnlyMap() ? ", map_sonar_only.png" : "") << ")\n";
 	if (!result.input_error.empty())
 		m_err << "error: " << result.input_error << "\n"
 			  << "       results for the " << c.entries << " entries read before the fault were written.\n";

@@ -25,7 +25,8 @@ common::TTimedPose2D timedPose(const mrpt::obs::CObservation& obs, const mrpt::p
 
 std::vector<std::string> CMappingPipeline::sections()
 {
-	std::vector<std::string> s{"process", "grid", "laser_model", "pose_estimation", "dynamic_objects"};
+	std::vector<std::string> s{"process", "grid", "laser_model", "pose_estimation", "dynamic_objects",
+							   "sonar_model", "tbf"};
 	for (const auto& e : CScanMatchingPoseEstimator::sections()) s.push_back(e);
 	return s;
 }
@@ -35,6 +36,7 @@ CMappingPipeline::CMappingPipeline(const mrpt::config::CConfigFileBase& cfg)
 	  m_poseOptions(loaded<TPoseEstimationOptions>(cfg, "pose_estimation")),
 	  m_grid(loaded<maps::CTiledOccupancyGrid::TOptions>(cfg, "grid")),
 	  m_laserInserter(loaded<maps::CLaserGridInserter::TOptions>(cfg, "laser_model")),
+	  m_sonar(loaded<TSonarMappingOptions>(cfg, "sonar_model"), loaded<TTbfStageOptions>(cfg, "tbf")),
 	  m_dynamicOptions(loaded<dynamic::CDynamicObjectFilter::TOptions>(cfg, "dynamic_objects")),
 	  m_estimator(createPoseEstimator(m_poseOptions, cfg, m_timer))
 {
@@ -59,7 +61,19 @@ void CMappingPipeline::saveOptions(mrpt::config::CConfigFileBase& out) const
 	common::saveOptions(m_poseOptions, out, "pose_estimation");
 	m_estimator->saveOptions(out);
 	common::saveOptions(m_dynamicOptions, out, "dynamic_objects");
+	common::saveOptions(m_sonar.mappingOptions(), out, "sonar_model");
+	common::saveOptions(m_sonar.tbfOptions(), out, "tbf");
 }
+
+void CMappingPipeline::keepSensorMaps()
+{
+	m_keepSensorMaps = true;
+	if (m_sonar.mappingOptions().enabled && !m_laserOnly)
+		m_laserOnly = std::make_unique<maps::CTiledOccupancyGrid>(m_grid.options());
+	if (!m_sonar.sonarOnlyMap()) m_sonar.keepSonarOnlyMap(m_grid.options());
+}
+
+const maps::CTiledOccupancyGrid* CMappingPipeline::laserOnlyMap() const { return m_laserOnly.get(); }
 
 void CMappingPipeline::processEntry(const io::TRawlogEntry& entry)
 {
@@ -87,6 +101,8 @@ void CMappingPipeline::processObservation(const mrpt::obs::CObservation::Ptr& ob
 		else
 			processScan(*scan);
 	}
+	else if (auto range = std::dynamic_pointer_cast<mrpt::obs::CObservationRange>(obs))
+		processSonar(*range);
 	else if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(obs))
 	{
 		common::CStageTimer::CScope t(m_timer, "odometry");
@@ -123,12 +139,32 @@ void CMappingPipeline::processScan(const mrpt::obs::CObservation2DRangeScan& sca
 		common::CStageTimer::CScope t(m_timer, "grid_update");
 		m_laserInserter.insert(m_grid, pose, scan, excluded);
 	}
+	if (m_laserOnly) m_laserInserter.insert(*m_laserOnly, pose, scan, excluded);  // untimed: images only
+	m_lastEstimate = pose;
 	m_trajectory.push_back(timedPose(scan, pose));
 	m_odometryTrajectory.push_back(timedPose(scan, m_deadReckoningPose));
 	for (const auto& observer : m_scanObservers) observer(scan, pose);
 	for (const auto& observer : m_estimateObservers) observer(scan, estimate);
 	estimate.lines.clear();
 	m_estimates.push_back({mrpt::Clock::toDouble(scan.timestamp), std::move(estimate)});
+}
+
+void CMappingPipeline::processSonar(const mrpt::obs::CObservationRange& obs)
+{
+	if (!m_sonar.active() && !m_keepSensorMaps)
+	{
+		++m_counters.other_observations;
+		return;
+	}
+	const TOdometryIncrement pending = m_odometry.pendingIncrement();
+	if ((!m_processOptions.sonar_label.empty() && obs.sensorLabel != m_processOptions.sonar_label) || !pending.known)
+	{
+		++m_counters.sonar_observations_ignored;
+		return;
+	}
+	++m_counters.sonar_observations;
+	m_sonar.process(obs, m_lastEstimate + pending.delta, m_grid, m_timer);
+	m_counters.sonar_readings_inserted = m_sonar.counters().readings_inserted;
 }
 
 const std::vector<bool>* CMappingPipeline::filterDynamicObjects(const mrpt::obs::CObservation2DRangeScan& scan,
@@ -138,6 +174,9 @@ const std::vector<bool>* CMappingPipeline::filterDynamicObjects(const mrpt::obs:
 	common::CStageTimer::CScope t(m_timer, "dynamic_objects");
 	const auto& frame = m_dynamicFilter->process(scan, pose, mrpt::Clock::toDouble(scan.timestamp));
 	dynamic::undoOccupiedHits(m_grid, frame.retro_clear_world, m_laserInserter.options().occupied_probability);
+	if (m_laserOnly)
+		dynamic::undoOccupiedHits(*m_laserOnly, frame.retro_clear_world,
+								  m_laserInserter.options().occupied_probability);
 	const size_t scanIndex = m_counters.laser_scans - 1;
 	dynamic::appendTrackRows(frame, scanIndex, m_trackRows);
 	if (m_debugFrames.size() < m_debugFramesMax && !frame.legs.empty()) m_debugFrames.push_back({scanIndex, scan, frame});

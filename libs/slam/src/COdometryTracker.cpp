@@ -15,11 +15,17 @@ void COdometryTracker::addOdometryObservation(const mrpt::obs::CObservationOdome
 	m_lastAbsolute = odometry.odometry;
 }
 
-TOdometryIncrement COdometryTracker::takeIncrement()
+TOdometryIncrement COdometryTracker::pendingIncrement() const
 {
 	TOdometryIncrement out;
 	out.known = !m_gap;
 	out.delta = m_gap ? mrpt::poses::CPose2D() : m_accumulated;
+	return out;
+}
+
+TOdometryIncrement COdometryTracker::takeIncrement()
+{
+	const TOdometryIncrement out = pendingIncrement();
 	m_accumulated = mrpt::poses::CPose2D();
 	m_gap = false;
 	return out;

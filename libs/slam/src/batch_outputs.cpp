@@ -9,6 +9,8 @@
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
+#include <algorithm>
+#include <cmath>
 
 namespace hslam::slam
 {
@@ -16,6 +18,7 @@ namespace
 {
 const mrpt::img::TColor kEstimateColour{220, 20, 20};
 const mrpt::img::TColor kOdometryColour{255, 150, 0};
+const mrpt::img::TColor kCornerColour{0, 190, 0};
 
 std::vector<mrpt::math::TPose2D> posesOf(const common::TTrajectory2D& trajectory)
 {
@@ -30,18 +33,59 @@ void savePng(const mrpt::img::CImage& image, const std::string& path)
 	if (!image.saveToFile(path)) throw std::runtime_error(path + ": cannot write image");
 }
 
-std::string writeMergedMap(const CMappingPipeline& pipeline, const TOutputOptions& options, const std::string& dir)
+/** Renders `grid` in the frame of the main map with the trajectories. */
+mrpt::img::CImage renderMapWithPaths(const CMappingPipeline& pipeline, const maps::CTiledOccupancyGrid& grid,
+									 const maps::TImageFrame& frame, const TOutputOptions& options)
 {
-	const auto& grid = pipeline.grid();
-	const maps::TImageFrame frame =
-		maps::frameForObservedArea(grid, options.map_margin_cells, options.map_pixels_per_cell);
 	mrpt::img::CImage image = maps::renderGrid(grid, frame);
 	if (options.draw_odometry && pipeline.poseEstimatorName() != "odometry")
 		maps::drawTrajectory(image, frame, posesOf(pipeline.odometryTrajectory()), kOdometryColour);
 	maps::drawTrajectory(image, frame, posesOf(pipeline.trajectory()), kEstimateColour);
-	const std::string path = dir + "/map.png";
-	savePng(image, path);
-	return path;
+	return image;
+}
+
+/** Green cross per corner (arm length grows with support) and a circle of
+ * two standard deviations (largest eigenvalue of the covariance). */
+void drawCorners(mrpt::img::CImage& image, const maps::TImageFrame& frame,
+				 const std::vector<sonar::TTbfCorner>& corners)
+{
+	for (const auto& c : corners)
+	{
+		double col, row;
+		frame.worldToPixel(c.point.x, c.point.y, col, row);
+		const int x = static_cast<int>(col), y = static_cast<int>(row);
+		const int arm = 3 + std::min(6, c.support / 4);
+		image.line(x - arm, y, x + arm, y, kCornerColour, 2);
+		image.line(x, y - arm, x, y + arm, kCornerColour, 2);
+		const double a = c.cov(0, 0), b = c.cov(0, 1), d = c.cov(1, 1);
+		const double maxEig = 0.5 * (a + d) + std::sqrt(0.25 * (a - d) * (a - d) + b * b);
+		const double radiusPx = 2.0 * std::sqrt(std::max(0.0, maxEig)) / frame.resolution_m * frame.pixels_per_cell;
+		image.drawCircle(x, y, std::max(2, static_cast<int>(std::lround(radiusPx))), kCornerColour, 1);
+	}
+}
+
+void writeMaps(const CMappingPipeline& pipeline, const TOutputOptions& options, const std::string& dir,
+			   std::vector<std::string>& written)
+{
+	const maps::TImageFrame frame =
+		maps::frameForObservedArea(pipeline.grid(), options.map_margin_cells, options.map_pixels_per_cell);
+	mrpt::img::CImage image = renderMapWithPaths(pipeline, pipeline.grid(), frame, options);
+	savePng(image, dir + "/map.png");
+	written.push_back(dir + "/map.png");
+	if (pipeline.sonarStage().tbfOptions().enabled)
+	{
+		drawCorners(image, frame, pipeline.sonarStage().corners());
+		savePng(image, dir + "/map_sonar_corners.png");
+		written.push_back(dir + "/map_sonar_corners.png");
+	}
+	// Same frame as map.png so the images overlay.
+	for (const auto& [grid, name] : {std::pair{pipeline.laserOnlyMap(), "map_laser_only.png"},
+									 std::pair{pipeline.sonarOnlyMap(), "map_sonar_only.png"}})
+	{
+		if (!grid) continue;
+		savePng(renderMapWithPaths(pipeline, *grid, frame, options), dir + "/" + name);
+		written.push_back(dir + "/" + name);
+	}
 }
 
 void writeTiles(const maps::CTiledOccupancyGrid& grid, int pixelsPerCell, const std::string& dir,
@@ -102,6 +146,18 @@ void writePoseEstimatesCsv(const std::vector<CMappingPipeline::TTimedEstimate>& 
 	if (!f) throw std::runtime_error(path + ": write failed");
 }
 
+void writeSonarCornersCsv(const std::vector<sonar::TTbfCorner>& corners, const std::string& path)
+{
+	std::ofstream f(path);
+	if (!f) throw std::runtime_error(path + ": cannot write");
+	f << "x_m,y_m,support,hypotheses,cov_xx_m2,cov_xy_m2,cov_yy_m2\n";
+	f.precision(9);
+	for (const auto& c : corners)
+		f << c.point.x << ',' << c.point.y << ',' << c.support << ',' << c.hypotheses << ',' << c.cov(0, 0) << ','
+		  << c.cov(0, 1) << ',' << c.cov(1, 1) << '\n';
+	if (!f) throw std::runtime_error(path + ": write failed");
+}
+
 void saveGridmapGz(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& path)
 {
 	mrpt::io::CFileGZOutputStream out;
@@ -115,7 +171,12 @@ std::vector<std::string> writeMappingOutputs(const CMappingPipeline& pipeline, c
 {
 	std::filesystem::create_directories(dir);
 	std::vector<std::string> written;
-	written.push_back(writeMergedMap(pipeline, options, dir));
+	writeMaps(pipeline, options, dir, written);
+	if (pipeline.sonarStage().tbfOptions().enabled)
+	{
+		writeSonarCornersCsv(pipeline.sonarStage().corners(), dir + "/sonar_corners.csv");
+		written.push_back(dir + "/sonar_corners.csv");
+	}
 	if (options.write_tiles) writeTiles(pipeline.grid(), options.tile_pixels_per_cell, dir, written);
 
 	const auto& grid = pipeline.grid();

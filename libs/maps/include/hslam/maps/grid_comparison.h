@@ -6,6 +6,7 @@
 
 #include <hslam/maps/CTiledOccupancyGrid.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/poses/CPose2D.h>
 
 #include <cstddef>
 
@@ -24,12 +25,33 @@ struct TCellAgreement
 {
 	size_t compared = 0;  //!< cells known in at least one map
 	size_t agreed = 0;  //!< of those, same class in both
+	size_t ours_known = 0;  //!< of those, known in ours (every agreed cell is)
 	size_t occupied_both = 0, occupied_only_ours = 0, occupied_only_mrpt = 0;
 	double fraction() const { return compared ? static_cast<double>(agreed) / compared : 1.0; }
+	/** Agreement over the cells our map claims to know. */
+	double fractionOfOursKnown() const { return ours_known ? static_cast<double>(agreed) / ours_known : 1.0; }
+	/** Reference occupied cells also occupied in ours. */
+	double occupiedFound() const
+	{
+		const size_t n = occupied_both + occupied_only_mrpt;
+		return n ? static_cast<double>(occupied_both) / n : 1.0;
+	}
 };
 
 /** Compares every cell of `mrptGrid` (which must use the same resolution). */
 TCellAgreement compareWithMrptGrid(const CTiledOccupancyGrid& ours, const mrpt::maps::COccupancyGridMap2D& mrptGrid,
 								   double margin = 0.01);
+
+/** A reference grid of any resolution in its own frame (e.g. a simulator's
+ * ground truth, gt_map.gridmap.gz at 5 cm) resampled onto our cells `cells`
+ * (our resolution and cell edges), with our map frame at `oursInReference` in
+ * the reference frame. A cell is occupied if any reference sample inside it is
+ * occupied (thin walls stay), free if its samples are all free, unknown
+ * otherwise; samples every half reference cell. The result can be passed to
+ * compareWithMrptGrid. */
+mrpt::maps::COccupancyGridMap2D resampleOntoOurCells(const mrpt::maps::COccupancyGridMap2D& reference,
+													 const CTiledGridGeometry& ours, const TCellBounds& cells,
+													 const mrpt::poses::CPose2D& oursInReference,
+													 double margin = 0.01);
 
 }  // namespace hslam::maps

@@ -3,11 +3,21 @@
  *     odometry increment -> pose estimation -> tiled grid update (laser)
  *     ... -> dynamic object filter (thesis 4.7; beams hitting confirmed
  *     moving people are not marked occupied) -> tiled grid update (laser)
- * Later stages (line features, sonar) plug in here.
+ * Per sonar ring observation (CObservationRange, CSonarMappingStage):
+ *     pose = estimate at the latest laser scan + odometry since that scan
+ *     -> sonar grid update (4.6.2 iii-iv, weighted against the laser)
+ *     -> TBF sonar corners (4.3)
+ * The sonar pose is the latest estimate composed with the odometry pending
+ * for the next scan (not re-estimated: pose estimation is laser-driven). With
+ * the simulator and the Pioneer driver sonars arrive in the same SIP cycle as
+ * the odometry, i.e. up to 100 ms after a scan; composing the pending
+ * odometry removes the up to 0.08 m / several degrees the robot moves in that
+ * time, which the latest estimate alone would smear into the sonar arcs.
+ * Across an odometry gap the pose is unknown and the reading is skipped.
  *
  * INI sections read (see config_ini/hslam-default.ini): [process], [grid],
- * [laser_model], [pose_estimation], [dynamic_objects]; unknown keys in them
- * are errors. */
+ * [laser_model], [pose_estimation], [dynamic_objects], [sonar_model], [tbf];
+ * unknown keys in them are errors. */
 #pragma once
 
 #include <hslam/common/CStageTimer.h>
@@ -19,6 +29,8 @@
 #include <hslam/maps/CTiledOccupancyGrid.h>
 #include <hslam/slam/COdometryTracker.h>
 #include <hslam/slam/CPoseEstimator.h>
+#include <hslam/slam/CSonarMappingStage.h>
+#include <mrpt/obs/CObservationRange.h>
 #include <mrpt/config/CConfigFileBase.h>
 
 #include <functional>
@@ -31,11 +43,13 @@ namespace hslam::slam
 struct TProcessOptions
 {
 	std::string laser_label;  //!< only scans with this sensor label are used; empty = all 2D scans
+	std::string sonar_label;  //!< only CObservationRange with this label are used; empty = all
 
 	template <class V>
 	void visit(V& v)
 	{
 		v.text("laser_label", laser_label);
+		v.text("sonar_label", sonar_label);
 	}
 };
 
@@ -46,6 +60,9 @@ struct TPipelineCounters
 	size_t laser_scans_ignored = 0;  //!< scans with another sensor label
 	size_t odometry_readings = 0;  //!< odometry actions or observations
 	size_t odometry_gaps = 0;  //!< intervals with unknown motion
+	size_t sonar_observations = 0;  //!< sonar ring observations used (grid and/or TBF)
+	size_t sonar_observations_ignored = 0;  //!< another label, or taken across an odometry gap
+	size_t sonar_readings_inserted = 0;  //!< single sonar readings inserted into the grid
 	size_t other_observations = 0;  //!< observations no stage uses yet
 };
 
@@ -59,6 +76,15 @@ class CMappingPipeline
 	void processEntry(const io::TRawlogEntry& entry);
 
 	const maps::CTiledOccupancyGrid& grid() const { return m_grid; }
+	/** Also keep a sonar-only grid and, if sonar readings go into the main
+	 * grid, a laser-only grid (map_sonar_only.png, map_laser_only.png). */
+	void keepSensorMaps();
+	/** Grid of the laser scans alone; null unless kept and sonar mapping is on
+	 * (otherwise grid() is the laser-only map). */
+	const maps::CTiledOccupancyGrid* laserOnlyMap() const;
+	/** Grid of the sonar readings alone (weight 1); null unless kept. */
+	const maps::CTiledOccupancyGrid* sonarOnlyMap() const { return m_sonar.sonarOnlyMap(); }
+	const CSonarMappingStage& sonarStage() const { return m_sonar; }
 	/** Estimated robot pose at each scan. */
 	const common::TTrajectory2D& trajectory() const { return m_trajectory; }
 	/** Dead-reckoning pose at each scan (same timestamps), for comparison. */
@@ -108,6 +134,7 @@ class CMappingPipeline
    private:
 	void processObservation(const mrpt::obs::CObservation::Ptr& obs);
 	void processScan(const mrpt::obs::CObservation2DRangeScan& scan);
+	void processSonar(const mrpt::obs::CObservationRange& obs);
 	/** Runs the dynamic object filter; returns its per-beam mask or null. */
 	const std::vector<bool>* filterDynamicObjects(const mrpt::obs::CObservation2DRangeScan& scan,
 												  const mrpt::poses::CPose2D& pose);
@@ -117,6 +144,10 @@ class CMappingPipeline
 	TPoseEstimationOptions m_poseOptions;
 	maps::CTiledOccupancyGrid m_grid;
 	maps::CLaserGridInserter m_laserInserter;
+	std::unique_ptr<maps::CTiledOccupancyGrid> m_laserOnly;  //!< kept only with sonar mapping on
+	CSonarMappingStage m_sonar;
+	bool m_keepSensorMaps = false;
+	mrpt::poses::CPose2D m_lastEstimate;  //!< pose at the latest scan (origin before the first)
 	dynamic::CDynamicObjectFilter::TOptions m_dynamicOptions;
 	std::unique_ptr<dynamic::CDynamicObjectFilter> m_dynamicFilter;
 	std::vector<dynamic::TTrackRow> m_trackRows;

@@ -42,6 +42,9 @@ class COdometryTracker
 
 	/** Pose change accumulated since the previous call (i.e. the previous scan). */
 	TOdometryIncrement takeIncrement();
+	/** What takeIncrement() would return now, without consuming it (for
+	 * sensors read between scans, e.g. sonars). */
+	TOdometryIncrement pendingIncrement() const;
 
    private:
 	mrpt::poses::CPose2D m_accumulated;

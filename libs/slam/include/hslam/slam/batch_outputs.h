@@ -9,7 +9,10 @@
  *   pose_plot.png       x, y, theta over time with +-1 sigma and odometry (thesis figs 117-127)
  *   frames/frame_N.png  on request (debug_frames_every): scan with its line segments (figs 88, 95)
  *   tracks.csv          leg and person tracks per scan (dynamic object filter on)
- *   dynamic/scan_N.png  per-scan debug images of the filter (dynamic_debug_images) */
+ *   dynamic/scan_N.png  per-scan debug images of the filter (dynamic_debug_images)
+ *   sonar_corners.csv   TBF sonar corners (x, y, support, covariance) ([tbf] enabled)
+ *   map_sonar_corners.png  map.png with the TBF corners (green crosses, 2-sigma circles)
+ *   map_laser_only.png, map_sonar_only.png  the grid of each sensor alone (write_sensor_maps) */
 #pragma once
 
 #include <hslam/slam/CMappingPipeline.h>
@@ -29,6 +32,7 @@ struct TOutputOptions
 	int debug_frames_every = 0;  //!< write frames/frame_N.png for every N-th scan; 0 = none
 	bool dynamic_debug_images = false;  //!< write dynamic/scan_N.png (thesis figures 156-165)
 	int dynamic_debug_max_images = 200;  //!< first scans with legs that get an image
+	bool write_sensor_maps = true;  //!< write map_laser_only.png and map_sonar_only.png
 
 	template <class V>
 	void visit(V& v)
@@ -41,6 +45,7 @@ struct TOutputOptions
 		v.integer("debug_frames_every", debug_frames_every, 0, 1000000);
 		v.flag("dynamic_debug_images", dynamic_debug_images);
 		v.integer("dynamic_debug_max_images", dynamic_debug_max_images, 1, 1000000);
+		v.flag("write_sensor_maps", write_sensor_maps);
 	}
 };
 
@@ -51,6 +56,9 @@ std::vector<std::string> writeMappingOutputs(const CMappingPipeline& pipeline, c
 
 /** Writes pose_estimates.csv: one row per scan. */
 void writePoseEstimatesCsv(const std::vector<CMappingPipeline::TTimedEstimate>& estimates, const std::string& path);
+
+/** Writes sonar_corners.csv: one row per TBF corner, positions in the map frame. */
+void writeSonarCornersCsv(const std::vector<sonar::TTbfCorner>& corners, const std::string& path);
 
 /** Saves a grid as a gz-compressed serialized COccupancyGridMap2D (.gridmap.gz). */
 void saveGridmapGz(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& path);

@@ -1,0 +1,226 @@
+/* hslam-bench sonar-batch: the sonar stage of the batch job (CMappingPipeline
+ * with CSonarMappingStage) on the simulated samples (rawlog_samples/<name>/:
+ * sim.rawlog, ground_truth.tum, gt_map.gridmap.gz, corners.csv), default
+ * pose estimation, against ground truth:
+ *   - map agreement with the ground-truth map (5 cm, resampled onto our
+ *     0.1 m cells by maps::resampleOntoOurCells: a cell is occupied if any
+ *     wall passes through it) for the laser-only map and the laser+sonar maps
+ *     (fast model with weights 0.1 / 0.05 / 0.02, standard model 0.1) and
+ *     the sonar-only map, all over the same cells (the union of the observed
+ *     areas), with
+ *       agreement      = same class / cells known in either map,
+ *       agree(known)   = same class / cells known in ours,
+ *       false occ      = occupied in ours, not in the truth,
+ *       walls found    = truth-occupied cells that ours marks occupied;
+ *   - TBF corners (support >= 1 and >= [tbf] min_support) against the true
+ *     point features within 0.2 m and 0.3 m: the wall corners (corners.csv)
+ *     and the static circles of the scene (pillars, chair and table legs;
+ *     distance to their surface), which echo like edges;
+ *   - the time of the sonar stages per ring observation.
+ * The map frame is placed on the truth with the first true pose. */
+#include "bench_common.h"
+
+#include <hslam/common/config_overrides.h>
+#include <hslam/common/tum_trajectory.h>
+#include <hslam/eval/point_landmark_score.h>
+#include <hslam/io/CRawlogReader.h>
+#include <hslam/maps/grid_comparison.h>
+#include <hslam/sim/scene.h>
+#include <hslam/slam/CMappingPipeline.h>
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <chrono>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+namespace hslam::bench
+{
+namespace
+{
+struct TConfigRun
+{
+	std::string name;
+	std::vector<std::string> overrides;
+};
+
+const std::vector<TConfigRun> kRuns = {
+	{"laser only", {"sonar_model.enabled=false"}},
+	{"laser+sonar fast w=0.1", {"sonar_model.enabled=true", "sonar_model.weight=0.1"}},
+	{"laser+sonar fast w=0.05", {"sonar_model.enabled=true", "sonar_model.weight=0.05"}},
+	{"laser+sonar fast w=0.02", {"sonar_model.enabled=true", "sonar_model.weight=0.02"}},
+	{"laser+sonar std w=0.1", {"sonar_model.enabled=true", "sonar_model.weight=0.1", "sonar_model.model=standard"}},
+};
+
+struct TRunResult
+{
+	std::string name;
+	std::unique_ptr<slam::CMappingPipeline> pipeline;
+	double seconds = 0;
+};
+
+double stageMean(const common::CStageTimer& timer, const std::string& stage, double* total = nullptr)
+{
+	for (const auto& s : timer.stats())
+		if (s.stage == stage)
+		{
+			if (total) *total = s.total_ms;
+			return s.mean_ms;
+		}
+	if (total) *total = 0;
+	return 0;
+}
+
+mrpt::maps::COccupancyGridMap2D loadGridmap(const std::string& path)
+{
+	mrpt::maps::COccupancyGridMap2D grid;
+	mrpt::io::CFileGZInputStream in(path);
+	mrpt::serialization::archiveFrom(in) >> grid;
+	return grid;
+}
+
+struct TTotals
+{
+	size_t laserAgreed = 0, laserCompared = 0, fusedAgreed = 0, fusedCompared = 0, laserKnown = 0, fusedKnown = 0;
+	size_t cornersFound = 0, cornersNear = 0;
+};
+
+/** Static circles of the sample's scene (config_ini/sim-<sample>.ini [world] scene_file). */
+std::vector<sim::TCircle> staticCircles(const std::string& sample)
+{
+	const std::string ini = "config_ini/sim-" + sample + ".ini";
+	const mrpt::config::CConfigFile cfg(ini);
+	const std::string scene = cfg.read_string("world", "scene_file", "");
+	if (scene.empty()) return {};
+	return sim::loadSceneFile("config_ini/" + scene).world.circles();
+}
+
+void printRow(const std::string& sample, const std::string& name, const maps::TCellAgreement& a, double msPerRing)
+{
+	std::cout << std::left << std::setw(10) << sample << std::setw(26) << name << std::right << std::fixed
+			  << std::setprecision(4) << std::setw(10) << a.fraction() << std::setw(13) << a.fractionOfOursKnown()
+			  << std::setw(8) << a.ours_known << std::setw(10) << a.occupied_only_ours << std::setw(8)
+			  << std::setprecision(3) << a.occupiedFound() << std::setw(10) << std::setprecision(4) << msPerRing
+			  << "\n";
+}
+}  // namespace
+
+int runSonarBatchSuite(const std::string& dataDir)
+{
+	const std::string ini = "config_ini/hslam-default.ini";
+	if (!std::filesystem::exists(ini)) throw std::runtime_error(ini + ": run hslam-bench from the repository root");
+	std::cout << "Sonar in the batch job (CMappingPipeline, default pose estimation) vs ground truth, 0.1 m cells\n"
+			  << std::left << std::setw(10) << "sample" << std::setw(26) << "map" << std::right << std::setw(10)
+			  << "agreement" << std::setw(13) << "agree(known)" << std::setw(8) << "known" << std::setw(10)
+			  << "false occ" << std::setw(8) << "walls" << std::setw(10) << "ms/ring" << "\n";
+	TTotals totals;
+	std::ostringstream tbfTable, costTable;
+	for (const std::string sample : {"lab", "corridor", "umbmark", "floor"})
+	{
+		const std::string dir = dataDir + "/" + sample;
+		std::vector<io::TRawlogEntry> entries;
+		{
+			io::CRawlogReader reader(dir + "/sim.rawlog");
+			for (io::TRawlogEntry e; reader.next(e);) entries.push_back(e);
+		}
+		std::vector<TRunResult> runs;
+		maps::TCellBounds cells;
+		for (const auto& config : kRuns)
+		{
+			auto overrides = config.overrides;
+			overrides.push_back("tbf.min_support=1");
+			TRunResult r;
+			r.name = config.name;
+			r.pipeline = std::make_unique<slam::CMappingPipeline>(common::loadConfigWithOverrides(ini, overrides));
+			if (&config == &kRuns[1]) r.pipeline->keepSensorMaps();
+			const auto t0 = std::chrono::steady_clock::now();
+			for (const auto& e : entries) r.pipeline->processEntry(e);
+			r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+			cells.include(r.pipeline->grid().observedBounds());
+			runs.push_back(std::move(r));
+		}
+		const auto truthTrajectory = common::readTumFile(dir + "/ground_truth.tum");
+		const auto& ours0 = runs[0].pipeline->trajectory().front().pose;
+		const auto& true0 = truthTrajectory.front().pose;
+		mrpt::poses::CPose2D oursInTruth(ours0.x, ours0.y, ours0.phi);
+		oursInTruth.inverse();
+		oursInTruth = mrpt::poses::CPose2D(true0.x, true0.y, true0.phi) + oursInTruth;
+		const auto& geometry = runs[0].pipeline->grid().geometry();
+		const auto truthGrid = maps::resampleOntoOurCells(loadGridmap(dir + "/gt_map.gridmap.gz"), geometry, cells,
+														   oursInTruth);
+		for (const auto& r : runs)
+		{
+			const auto a = maps::compareWithMrptGrid(r.pipeline->grid(), truthGrid);
+			printRow(sample, r.name, a, stageMean(r.pipeline->timer(), "sonar_update"));
+			if (&r == &runs[0])
+				totals.laserAgreed += a.agreed, totals.laserCompared += a.compared, totals.laserKnown += a.ours_known;
+			if (&r == &runs[1])
+				totals.fusedAgreed += a.agreed, totals.fusedCompared += a.compared, totals.fusedKnown += a.ours_known;
+		}
+		const auto& fused = *runs[1].pipeline;
+		printRow(sample, "sonar only (fast, w=1)", maps::compareWithMrptGrid(*fused.sonarOnlyMap(), truthGrid), 0.0);
+
+		// True point features: the wall corners (corners.csv) and the static
+		// circles of the scene (pillars, chair and table legs), which reflect
+		// sonar like edges and are what TBF finds most in these worlds.
+		const auto wallCorners = eval::readPointsCsv(dir + "/corners.csv");
+		std::vector<mrpt::math::TPoint2D> circles;
+		std::vector<double> circleRadii;
+		for (const auto& c : staticCircles(sample)) circles.push_back(c.centre), circleRadii.push_back(c.radius_m);
+		auto allPoints = wallCorners;
+		allPoints.insert(allPoints.end(), circles.begin(), circles.end());
+		std::vector<double> allRadii(wallCorners.size(), 0.0);
+		allRadii.insert(allRadii.end(), circleRadii.begin(), circleRadii.end());
+		const int minSupport = slam::TTbfStageOptions().min_support;
+		for (const int support : {1, minSupport})
+		{
+			std::vector<mrpt::math::TPoint2D> found;
+			for (const auto& c : fused.sonarStage().corners())
+				if (c.support >= support) found.push_back(c.point);
+			const auto s2 = eval::scorePointLandmarks(found, allPoints, 0.2, oursInTruth, allRadii);
+			const auto s3 = eval::scorePointLandmarks(found, allPoints, 0.3, oursInTruth, allRadii);
+			const auto w3 = eval::scorePointLandmarks(found, wallCorners, 0.3, oursInTruth);
+			const auto c3 = eval::scorePointLandmarks(found, circles, 0.3, oursInTruth, circleRadii);
+			tbfTable << std::left << std::setw(10) << sample << std::right << std::setw(8) << support << std::setw(9)
+					 << found.size() << std::setw(7) << wallCorners.size() << std::setw(9) << circles.size()
+					 << std::fixed << std::setprecision(3) << std::setw(10) << s2.precision() << std::setw(10)
+					 << s3.precision() << std::setw(11) << w3.recall() << std::setw(11) << c3.recall() << "\n";
+			if (support == minSupport)
+				totals.cornersFound += s3.found, totals.cornersNear += s3.found_near_truth;
+		}
+		// The sensor maps repeat the laser grid update and the sonar update
+		// on their own grids (untimed): their cost is about the timed totals.
+		double gridTotal = 0, sonarTotal = 0, tbfTotal = 0;
+		stageMean(fused.timer(), "grid_update", &gridTotal);
+		const double sonarMean = stageMean(fused.timer(), "sonar_update", &sonarTotal);
+		const double tbfMean = stageMean(fused.timer(), "sonar_corners", &tbfTotal);
+		const double jobMs = 1e3 * runs[1].seconds;
+		costTable << std::left << std::setw(10) << sample << std::right << std::fixed << std::setprecision(2)
+				  << std::setw(12) << runs[0].seconds << std::setw(12) << runs[1].seconds << std::setw(8)
+				  << fused.counters().sonar_observations << std::setprecision(4) << std::setw(11) << sonarMean
+				  << std::setw(11) << tbfMean << std::setprecision(1) << std::setw(10)
+				  << 100.0 * (sonarTotal + tbfTotal) / jobMs << std::setw(10) << 100.0 * (gridTotal + sonarTotal) / jobMs
+				  << "\n";
+	}
+	std::cout << "   agreement over the union of the observed areas of all maps; walls = truth-occupied cells found\n"
+			  << "\nTBF corners vs true point features: wall corners (corners.csv) + static circles (scene)\n"
+			  << "sample    support  corners  walls  circles  prec@0.2  prec@0.3  wall rec  circle rec   (rec@0.3 m)\n"
+			  << tbfTable.str()
+			  << "\nCost in the job (laser+sonar fast w=0.1 run, with the sensor maps kept)\n"
+			  << "sample     laser-only s  fused s   rings  update ms  tbf ms/ring  sonar %  sensor maps %\n"
+			  << costTable.str();
+	std::cout << "\nsonar_batch_laser_only_agreement=" << static_cast<double>(totals.laserAgreed) / totals.laserCompared
+			  << "\nsonar_batch_fused_agreement=" << static_cast<double>(totals.fusedAgreed) / totals.fusedCompared
+			  << "\nsonar_batch_laser_only_known_agreement=" << static_cast<double>(totals.laserAgreed) / totals.laserKnown
+			  << "\nsonar_batch_fused_known_agreement=" << static_cast<double>(totals.fusedAgreed) / totals.fusedKnown
+			  << "\nsonar_batch_tbf_precision_0_3m="
+			  << (totals.cornersFound ? static_cast<double>(totals.cornersNear) / totals.cornersFound : 0.0)
+			  << "\n";
+	return 0;
+}
+
+}  // namespace hslam::bench
