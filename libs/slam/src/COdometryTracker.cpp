@@ -4,6 +4,7 @@ namespace hslam::slam
 {
 void COdometryTracker::addAction(const mrpt::obs::CActionRobotMovement2D& action)
 {
+	m_anyOdometry = true;
 	mrpt::poses::CPose2D change;
 	action.poseChange->getMean(change);
 	m_accumulated = m_accumulated + change;
@@ -11,6 +12,7 @@ void COdometryTracker::addAction(const mrpt::obs::CActionRobotMovement2D& action
 
 void COdometryTracker::addOdometryObservation(const mrpt::obs::CObservationOdometry& odometry)
 {
+	m_anyOdometry = true;
 	if (m_lastAbsolute) m_accumulated = m_accumulated + (odometry.odometry - *m_lastAbsolute);
 	m_lastAbsolute = odometry.odometry;
 }
@@ -18,8 +20,10 @@ void COdometryTracker::addOdometryObservation(const mrpt::obs::CObservationOdome
 TOdometryIncrement COdometryTracker::pendingIncrement() const
 {
 	TOdometryIncrement out;
-	out.known = !m_gap;
-	out.delta = m_gap ? mrpt::poses::CPose2D() : m_accumulated;
+	// A log without any odometry (laser-only recordings) says nothing about
+	// motion: unknown, not zero, so the scan matcher can track the robot.
+	out.known = !m_gap && m_anyOdometry;
+	out.delta = out.known ? m_accumulated : mrpt::poses::CPose2D();
 	return out;
 }
 

@@ -4,6 +4,7 @@
 #include <hslam/slam/CScanMatchingPoseEstimator.h>
 
 #include <cmath>
+#include <mrpt/math/wrap2pi.h>
 
 namespace hslam::slam
 {
@@ -109,13 +110,20 @@ void CScanMatchingPoseEstimator::predict(const TOdometryIncrement& increment)
 	}
 }
 
-std::optional<matching::TPoseMatch> CScanMatchingPoseEstimator::runIcp(const matching::TLineScanFrame& frame,
-																		const mrpt::poses::CPose2D& seedWorld)
+std::optional<matching::TPoseMatch> CScanMatchingPoseEstimator::runIcp(
+	const matching::TLineScanFrame& frame, const std::vector<mrpt::poses::CPose2D>& seedsWorld)
 {
-	if (m_keyframes.empty()) return std::nullopt;
+	if (m_keyframes.empty() || seedsWorld.empty()) return std::nullopt;
 	common::CStageTimer::CScope t(m_timer, "icp");
-	const auto& reference = m_keyframes.reference(seedWorld);
-	return m_icp.match(reference, frame.pointsMap, seedWorld, m_ukf.covariance());
+	const auto& reference = m_keyframes.reference(seedsWorld.front());
+	std::optional<matching::TPoseMatch> best;
+	for (const auto& seed : seedsWorld)
+	{
+		auto m = m_icp.match(reference, frame.pointsMap, seed, m_ukf.covariance());
+		// a later seed must pair clearly more points to replace an earlier one
+		if (!best || m.score > best->score + m_icp.options().restart_goodness_tolerance) best = std::move(m);
+	}
+	return best;
 }
 
 void CScanMatchingPoseEstimator::fuse(const matching::TPoseMatch& match, bool relative,
@@ -151,8 +159,16 @@ void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, T
 	{
 		// Seed: the line result composed onto the previous pose, else the UKF prediction.
 		const mrpt::poses::CPose2D clonePose = m_ukf.hasClone() ? toPose(m_ukf.clonePose()) : currentPose();
-		const mrpt::poses::CPose2D seed = lineUsable ? clonePose + lineMatch->pose : currentPose();
-		icpMatch = runIcp(frame, seed);
+		// Seeds: the line result first, then the UKF prediction if it differs
+		// (a wrong line pairing, e.g. when odometry is missing, must not
+		// decide the basin ICP converges in).
+		std::vector<mrpt::poses::CPose2D> seeds;
+		if (lineUsable) seeds.push_back(clonePose + lineMatch->pose);
+		const mrpt::poses::CPose2D predicted = currentPose();
+		if (seeds.empty() || seeds.front().distanceTo(predicted) > 0.05 ||
+			std::abs(mrpt::math::wrapToPi(seeds.front().phi() - predicted.phi())) > 1.0 * M_PI / 180)
+			seeds.push_back(predicted);
+		icpMatch = runIcp(frame, seeds);
 		m_sinceIcp = mrpt::poses::CPose2D();
 	}
 	estimate.matched = lineMatch.has_value() || icpMatch.has_value();

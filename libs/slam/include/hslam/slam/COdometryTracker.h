@@ -5,7 +5,8 @@
  *
  * A missing increment (a "ODOMETRY_GAP" comment written by our CARMEN
  * importer, or a CObservationOdometry chain that restarts) is reported as
- * unknown motion, never silently as zero motion. */
+ * unknown motion, never silently as zero motion; so is every increment of a
+ * log that has no odometry at all (laser-only recordings). */
 #pragma once
 
 #include <mrpt/obs/CActionRobotMovement2D.h>
@@ -50,6 +51,7 @@ class COdometryTracker
 	mrpt::poses::CPose2D m_accumulated;
 	std::optional<mrpt::poses::CPose2D> m_lastAbsolute;
 	bool m_gap = false;
+	bool m_anyOdometry = false;  //!< false until the first odometry reading: motion unknown
 };
 
 }  // namespace hslam::slam

@@ -96,8 +96,9 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	matching::TLineScanFrame makeFrame(const mrpt::obs::CObservation2DRangeScan& scan);
 	void predict(const TOdometryIncrement& increment);
 	void matchAndFuse(matching::TLineScanFrame& frame, TPoseEstimate& estimate);
+	/** ICP from each seed (world frame, preferred first); the best paired result. */
 	std::optional<matching::TPoseMatch> runIcp(const matching::TLineScanFrame& frame,
-												const mrpt::poses::CPose2D& seedWorld);
+												const std::vector<mrpt::poses::CPose2D>& seedsWorld);
 	void fuse(const matching::TPoseMatch& match, bool relative, fusion::CAdaptiveMeasurementNoise& noise,
 			  TPoseEstimate& estimate);
 	mrpt::poses::CPose2D currentPose() const;
