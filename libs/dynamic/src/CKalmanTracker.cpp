@@ -88,7 +88,7 @@ void CKalmanTracker::updatePolar(TTrack& t, const mrpt::poses::CPose2D& sensorPo
 	t.v_angular_radps = (-t.x[2] * uy + t.x[3] * ux) / t.range_m;
 }
 
-TTrack CKalmanTracker::newTrack(const mrpt::math::TPoint2D& z, double t_s)
+TTrack CKalmanTracker::newTrack(const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose, double t_s)
 {
 	TTrack t;
 	t.id = m_nextId++;
@@ -99,17 +99,42 @@ TTrack CKalmanTracker::newTrack(const mrpt::math::TPoint2D& z, double t_s)
 	t.t_last_s = t.t_seen_s = t_s;
 	t.hits = 1;
 	t.birth_m = z;
+	t.sensor_birth_m = sensorPose.inverseComposePoint(z);
 	return t;
 }
 
-void CKalmanTracker::registerHit(TTrack& t, const mrpt::math::TPoint2D& z, bool evidence) const
+bool CKalmanTracker::significantSpeed(const TTrack& t) const
+{
+	// Speed squared in units of its own covariance (Mahalanobis distance of
+	// the velocity from zero): pose noise and detector jitter give a speed
+	// the filter itself deems uncertain; a walking person a sustained one.
+	const Eigen::Vector2d v(t.x[2], t.x[3]);
+	const Eigen::Matrix2d Pv = t.P.bottomRightCorner<2, 2>();
+	const double sigma2 = m_options.confirm_speed_sigma * m_options.confirm_speed_sigma;
+	return v.norm() >= m_options.confirm_speed_mps && v.dot(Pv.ldlt().solve(v)) >= sigma2;
+}
+
+bool CKalmanTracker::meetsConfirmation(const TTrack& t) const
+{
+	const auto& o = m_options;
+	// Moved in the world (not static) AND relative to the sensor (not a part
+	// of the robot or something it carries, which moves with it).
+	const bool relative = !o.confirm_relative_motion || t.sensor_travel_m >= o.confirm_travel_m;
+	return t.travel_m >= o.confirm_travel_m && relative && t.hits >= o.confirm_hits &&
+		   t.free_hits >= o.confirm_free_hits && t.moving_frames >= o.confirm_moving_frames;
+}
+
+void CKalmanTracker::registerHit(TTrack& t, const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose,
+								 bool evidence) const
 {
 	++t.hits;
 	t.misses = 0;
 	t.free_hits += evidence;
 	t.travel_m = std::max(t.travel_m, std::hypot(z.x - t.birth_m.x, z.y - t.birth_m.y));
-	if (t.travel_m >= m_options.confirm_travel_m && t.hits >= m_options.confirm_hits &&
-		t.free_hits >= m_options.confirm_free_hits)
+	const auto zs = sensorPose.inverseComposePoint(z);
+	t.sensor_travel_m = std::max(t.sensor_travel_m, std::hypot(zs.x - t.sensor_birth_m.x, zs.y - t.sensor_birth_m.y));
+	t.moving_frames = significantSpeed(t) ? t.moving_frames + 1 : 0;
+	if (meetsConfirmation(t))
 		t.state = ETrackState::dynamic;
 	else if (t.state == ETrackState::tentative && t.hits >= m_options.ghost_after_frames)
 		t.state = ETrackState::ghost;
@@ -142,9 +167,12 @@ void CKalmanTracker::takeOverFromMemory(double t_s, std::vector<int>& owner)
 		}
 		std::replace(owner.begin(), owner.end(), heir->id, old.id);
 		heir->id = old.id;
-		if (heir->free_hits >= m_options.confirm_free_hits) heir->state = ETrackState::dynamic;
+		// The identity is taken over at once; the dynamic state only when the
+		// heir itself passes the confirmation rule with the world travel of
+		// the old track (clutter next to a lost person must not inherit it).
 		heir->birth_m = old.birth_m;
 		heir->travel_m = std::max(heir->travel_m, old.travel_m);
+		if (meetsConfirmation(*heir)) heir->state = ETrackState::dynamic;
 		++m_reidentified;
 		m = m_memory.erase(m);
 	}
@@ -179,7 +207,7 @@ std::vector<int> CKalmanTracker::update(const std::vector<mrpt::math::TPoint2D>&
 		t.observation = static_cast<int>(oi);
 		t.t_seen_s = t_s;
 		correct(t, observations[oi]);
-		registerHit(t, observations[oi], evidence(oi));
+		registerHit(t, observations[oi], sensorPose, evidence(oi));
 	}
 
 	// Missed tracks: null counter; dropped after max_misses (dynamic ones are remembered).
@@ -220,19 +248,22 @@ std::vector<int> CKalmanTracker::update(const std::vector<mrpt::math::TPoint2D>&
 				best = m;
 			}
 		}
-		TTrack t = newTrack(z, t_s);
+		TTrack t = newTrack(z, sensorPose, t_s);
 		t.free_hits = evidence(oi);
 		if (best != m_memory.end())
 		{
 			--m_nextId;  // the remembered id is reused
 			t.id = best->track.id;
-			// Identity comes back at once; the dynamic state only with fresh
-			// motion evidence (else clutter near a lost person would inherit it).
-			t.state = (!motionEvidence || evidence(oi)) ? ETrackState::dynamic : ETrackState::tentative;
+			// Identity comes back at once; the dynamic state when the new track
+			// passes the confirmation rule with the old track's world travel
+			// and counts (at once for the thesis rule; with the relative-motion
+			// test once it has moved relative to the sensor; else clutter next
+			// to a lost person, or the robot's own body, would inherit it).
 			t.birth_m = best->track.birth_m;
 			t.travel_m = best->track.travel_m;
 			t.hits = best->track.hits + 1;
 			t.free_hits = best->track.free_hits + evidence(oi);
+			if ((!motionEvidence || evidence(oi)) && meetsConfirmation(t)) t.state = ETrackState::dynamic;
 			m_memory.erase(best);
 			++m_reidentified;
 		}

@@ -24,15 +24,24 @@
  *    frames) and, if confirm_free_hits > 0, was seen that many times where
  *    the sensor had seen free space before (beyond the thesis: a track
  *    hopping between static clutter also "moves", but never into space
- *    that was free); a track still short of that after ghost_after_frames hits
+ *    that was free). Also beyond the thesis, two checks that what "moved"
+ *    is not pose error or the robot itself: the speed must be sustained
+ *    (confirm_moving_frames consecutive hits with a Kalman speed of at
+ *    least confirm_speed_mps and confirm_speed_sigma standard deviations of
+ *    its own covariance: pose drift moves static things slowly, people
+ *    walk at 0.5-1.5 m/s), and with confirm_relative_motion the track must
+ *    have moved confirm_travel_m in the sensor frame too (a part of the
+ *    robot moves with it in the world but not relative to it; the rear
+ *    laser of the legs data sees one). A track still short of that after ghost_after_frames hits
  *    becomes static (a ghost: never reported as dynamic, it may still turn
  *    dynamic if it starts moving); max_misses consecutive missed frames drop
  *    a track (thesis: 3).
  *  - Memory (beyond the thesis): a dropped dynamic track is remembered for
  *    memory_s; a new observation within memory_gate_m of where it was
  *    lost (or of its constant-velocity extrapolation) takes over its id and
- *    dynamic state (the state only if the observation has motion evidence,
- *    when evidence is given), so a person reappearing after an occlusion
+ *    world travel; it is dynamic again once it passes the confirmation
+ *    rule with that travel (not blindly: clutter next to a lost person or
+ *    the robot's body would inherit the state), so a person reappearing after an occlusion
  *    keeps its identity. Likewise a younger track (not a ghost) near where
  *    a dropped dynamic track would be takes over its id (the observation
  *    had jumped out of the old track's gate).
@@ -69,6 +78,9 @@ struct TTrack
 	mrpt::math::TPoint2D birth_m;  //!< first observed world position
 	double travel_m = 0;  //!< largest distance of an observation from birth_m
 	int free_hits = 0;  //!< observations that came with motion evidence (see update())
+	mrpt::math::TPoint2D sensor_birth_m;  //!< first observed position in the sensor frame of that scan
+	double sensor_travel_m = 0;  //!< largest distance of an observation from sensor_birth_m, in the sensor frame
+	int moving_frames = 0;  //!< consecutive hits with a significant speed (see confirm_speed_sigma)
 	int observation = -1;  //!< index of the observation associated in the last update, -1 if missed
 	/** Polar state in the sensor frame of the last update (thesis H.1 obj[]). */
 	double range_m = 0, bearing_rad = 0, v_radial_mps = 0, v_angular_radps = 0;
@@ -95,6 +107,10 @@ class CKalmanTracker
 		double memory_s = 2.0;  //!< how long a lost dynamic track can be re-identified
 		double memory_gate_m = 0.7;  //!< re-identification radius
 		int confirm_free_hits = 1;  //!< observations with motion evidence needed to confirm (0: thesis rule; waived when update() gets no evidence)
+		int confirm_moving_frames = 2;  //!< consecutive hits with a significant speed needed to confirm (0: off, thesis rule)
+		double confirm_speed_mps = 0.2;  //!< "significant speed": at least this fast ...
+		double confirm_speed_sigma = 1.0;  //!< ... and this many standard deviations (Kalman covariance) above zero
+		bool confirm_relative_motion = true;  //!< also require confirm_travel_m in the sensor frame (not attached to the robot; thesis: no)
 
 		template <class V>
 		void visit(V& v)
@@ -112,6 +128,10 @@ class CKalmanTracker
 			v.real("memory_s", memory_s, 0.0, 3600.0);
 			v.real("memory_gate_m", memory_gate_m, 0.0, 100.0);
 			v.integer("confirm_free_hits", confirm_free_hits, 0, 1000);
+			v.integer("confirm_moving_frames", confirm_moving_frames, 0, 1000);
+			v.real("confirm_speed_mps", confirm_speed_mps, 0.0, 100.0);
+			v.real("confirm_speed_sigma", confirm_speed_sigma, 0.0, 100.0);
+			v.flag("confirm_relative_motion", confirm_relative_motion);
 		}
 	};
 
@@ -149,8 +169,11 @@ class CKalmanTracker
 	void correct(TTrack& t, const mrpt::math::TPoint2D& z) const;
 	bool inGate(const TTrack& t, const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose) const;
 	void updatePolar(TTrack& t, const mrpt::poses::CPose2D& sensorPose) const;
-	TTrack newTrack(const mrpt::math::TPoint2D& z, double t_s);
-	void registerHit(TTrack& t, const mrpt::math::TPoint2D& z, bool evidence) const;
+	TTrack newTrack(const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose, double t_s);
+	void registerHit(TTrack& t, const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose,
+					 bool evidence) const;
+	bool significantSpeed(const TTrack& t) const;
+	bool meetsConfirmation(const TTrack& t) const;
 	void takeOverFromMemory(double t_s, std::vector<int>& owner);
 
 	TOptions m_options;
