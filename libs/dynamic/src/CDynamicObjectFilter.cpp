@@ -108,11 +108,20 @@ const TDynamicFrame& CDynamicObjectFilter::process(const mrpt::obs::CObservation
 	std::vector<mrpt::math::TPoint2D> personsWorld;
 	std::vector<int> personOfLeg;
 	pairLegs(legsWorld, personsWorld, personOfLeg);
-	std::vector<bool> personEvidence(personsWorld.size(), false);
+	// Person evidence: one of its legs is where free space was and, with
+	// person_needs_dynamic_leg, on a leg track confirmed dynamic itself (a
+	// pair of static legs changes its midpoint when the pairing changes).
+	std::vector<bool> personEvidence(personsWorld.size(), !useEvidence);
 	for (size_t i = 0; i < legsWorld.size(); ++i)
-		if (m_frame.leg_in_free_space[i]) personEvidence[static_cast<size_t>(personOfLeg[i])] = true;
+	{
+		const TTrack* leg = m_legs.find(m_frame.leg_track[i]);
+		const bool legDynamic = leg && leg->state == ETrackState::dynamic;
+		if ((!useEvidence || m_frame.leg_in_free_space[i]) && (!m_options.person_needs_dynamic_leg || legDynamic))
+			personEvidence[static_cast<size_t>(personOfLeg[i])] = true;
+	}
+	const bool usePersonEvidence = useEvidence || m_options.person_needs_dynamic_leg;
 	const std::vector<int> personIds =
-		m_persons.update(personsWorld, sensorPose, t_s, useEvidence ? &personEvidence : nullptr);
+		m_persons.update(personsWorld, sensorPose, t_s, usePersonEvidence ? &personEvidence : nullptr);
 
 	m_frame.person_track.resize(m_frame.legs.size());
 	m_frame.leg_is_dynamic.resize(m_frame.legs.size());

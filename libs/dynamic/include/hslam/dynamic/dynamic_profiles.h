@@ -9,7 +9,8 @@ namespace hslam::dynamic
  * beyond it: find_interv from one leg width (0.18 m, the H.3 table) without
  * an upper beam count; a track is dynamic once it has moved 0.2 m from its
  * birth, without motion evidence, relative-motion test or speed
- * significance; the person disc is a fixed 0.35 m. */
+ * significance; a person track is confirmed by its own motion; the person
+ * disc is a fixed 0.35 m. */
 inline const char* kThesisProfileIni = R"([dynamic_objects]
 min_leg_width_m = 0.18
 max_leg_width_m = 0
@@ -18,6 +19,7 @@ confirm_relative_motion = false
 confirm_moving_frames = 0
 mask_radius_m = 0.35
 mask_sigma = 0
+person_needs_dynamic_leg = false
 )";
 
 /** Hokuyo at 0.35 deg with people up to 5 m (../shared/datasets/legs):
