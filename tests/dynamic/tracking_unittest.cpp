@@ -224,3 +224,38 @@ TEST(KalmanTracker, SlowDriftIsNotSustainedMotion)
 	EXPECT_EQ(once.find(b[0])->state, ETrackState::dynamic);
 	EXPECT_EQ(walk.find(c[0])->state, ETrackState::dynamic);
 }
+
+TEST(DynamicObjectFilter, PairingChangesOfStaticLegsDoNotMakeAPersonDynamic)
+{
+	// Two static chair legs 0.45 m apart, the second one hidden every other
+	// 3 scans: the person observation jumps between their midpoint and the
+	// first leg (0.225 m) although nothing moves. Without free-space
+	// evidence (confirm_free_hits = 0) and the sustained-speed test
+	// (confirm_moving_frames = 0), only person_needs_dynamic_leg keeps the
+	// person track from being confirmed and its beams from being excluded.
+	const auto run = [](bool needsLeg) {
+		CDynamicObjectFilter::TOptions o;
+		o.tracker.confirm_free_hits = 0;
+		o.tracker.confirm_moving_frames = 0;
+		o.person_needs_dynamic_leg = needsLeg;
+		CDynamicObjectFilter filter(o);
+		size_t masked = 0;
+		bool personDynamic = false;
+		for (int k = 0; k < 30; ++k)
+		{
+			std::vector<TCircle> legs = {{1.5, 0.0, 0.06}};
+			if ((k / 3) % 2 == 0) legs.push_back({1.5, 0.45, 0.06});
+			const auto& frame = filter.process(castScan({}, legs, room(4.0), 361, M_PI), {}, 0.1 * k);
+			masked += frame.dynamicBeams();
+			EXPECT_EQ(frame.legs.size(), legs.size()) << "scan " << k;
+			for (const auto& t : frame.person_tracks) personDynamic |= t.state == ETrackState::dynamic;
+			for (const auto& t : frame.leg_tracks) EXPECT_NE(t.state, ETrackState::dynamic) << "scan " << k;
+		}
+		return std::make_pair(personDynamic, masked);
+	};
+	const auto thesis = run(false), now = run(true);
+	EXPECT_TRUE(thesis.first);  // the artefact is real without the rule
+	EXPECT_GT(thesis.second, 10u);
+	EXPECT_FALSE(now.first);
+	EXPECT_EQ(now.second, 0u);
+}

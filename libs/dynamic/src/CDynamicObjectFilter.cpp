@@ -20,6 +20,15 @@ maps::CTiledOccupancyGrid::TOptions seenGridOptions(const CDynamicObjectFilter::
 	return g;
 }
 
+/** Person tracks: with person_needs_dynamic_leg at least one observation
+ * backed by a dynamic leg track is needed (passed as motion evidence). */
+CKalmanTracker::TOptions personTrackerOptions(const CDynamicObjectFilter::TOptions& o)
+{
+	CKalmanTracker::TOptions t = o.tracker;
+	if (o.person_needs_dynamic_leg) t.confirm_free_hits = std::max(1, t.confirm_free_hits);
+	return t;
+}
+
 maps::CLaserGridInserter::TOptions seenInserterOptions(const CDynamicObjectFilter::TOptions& o)
 {
 	maps::CLaserGridInserter::TOptions l;
@@ -33,7 +42,7 @@ CDynamicObjectFilter::CDynamicObjectFilter(const TOptions& options)
 	: m_options(options),
 	  m_detector(options.detector),
 	  m_legs(options.tracker),
-	  m_persons(options.tracker),
+	  m_persons(personTrackerOptions(options)),
 	  m_seen(seenGridOptions(options)),
 	  m_seenInserter(seenInserterOptions(options))
 {
@@ -111,7 +120,7 @@ const TDynamicFrame& CDynamicObjectFilter::process(const mrpt::obs::CObservation
 	// Person evidence: one of its legs is where free space was and, with
 	// person_needs_dynamic_leg, on a leg track confirmed dynamic itself (a
 	// pair of static legs changes its midpoint when the pairing changes).
-	std::vector<bool> personEvidence(personsWorld.size(), !useEvidence);
+	std::vector<bool> personEvidence(personsWorld.size(), false);  // every person has a leg
 	for (size_t i = 0; i < legsWorld.size(); ++i)
 	{
 		const TTrack* leg = m_legs.find(m_frame.leg_track[i]);
