@@ -16,6 +16,7 @@
 #include <hslam/dynamic/dynamic_profiles.h>
 #include <hslam/dynamic/occupied_cells.h>
 #include <hslam/io/CRawlogReader.h>
+#include <hslam/matching/CKeyframePointMap.h>
 #include <hslam/maps/CLaserGridInserter.h>
 #include <hslam/maps/grid_rendering.h>
 #include <mrpt/config/CConfigFile.h>
@@ -224,8 +225,12 @@ void runFilter(const dynamic::CDynamicObjectFilter::TOptions& options,
 				lateDynamic[i].push_back(all[i][k]);
 }
 
-/** Scan-to-scan ICP odometry of one sensor (negative_2 has no odometry and
- * no tf): the robot motion the tracker compensates. Laser frame = robot frame. */
+/** ICP odometry of one sensor (negative_2 has no odometry and no tf): the
+ * robot motion the tracker compensates. Laser frame = robot frame. Each
+ * scan is matched against the world points of recent keyframes
+ * (matching::CKeyframePointMap, as MRPT's icp-slam does), seeded by the
+ * previous motion (matching only the previous scan drifts like a random
+ * walk: 1.70 instead of 1.63 confirmed false legs per scan). */
 std::vector<mrpt::poses::CPose2D> icpPoses(const std::vector<CObservation2DRangeScan::Ptr>& scans)
 {
 	mrpt::slam::CICP icp;
@@ -235,19 +240,29 @@ std::vector<mrpt::poses::CPose2D> icpPoses(const std::vector<CObservation2DRange
 	icp.options.ALFA = 0.5;
 	icp.options.smallestThresholdDist = 0.02;
 	std::vector<mrpt::poses::CPose2D> poses(scans.size());
-	mrpt::maps::CSimplePointsMap previous;
 	mrpt::poses::CPose2D lastDelta;
+	matching::CKeyframePointMap::TOptions kfOptions;
+	kfOptions.insertion_distance_m = 0.3;
+	kfOptions.insertion_angle_rad = 10 * M_PI / 180;
+	kfOptions.max_keyframes = 20;
+	matching::CKeyframePointMap keyframes(kfOptions);
 	for (size_t i = 0; i < scans.size(); ++i)
 	{
 		mrpt::maps::CSimplePointsMap current;
 		current.insertObservation(*scans[i]);
 		if (i > 0)
 		{
-			const auto pdf = icp.Align(&previous, &current, lastDelta);
-			lastDelta = pdf->getMeanVal();
-			poses[i] = poses[i - 1] + lastDelta;
+			const mrpt::poses::CPose2D guess = poses[i - 1] + lastDelta;
+			const auto pdf = icp.Align(&keyframes.reference(guess), &current, guess);
+			poses[i] = pdf->getMeanVal();
+			lastDelta = poses[i] - poses[i - 1];
 		}
-		previous = std::move(current);
+		if (keyframes.empty() || keyframes.wantsKeyframe(poses[i]))
+		{
+			std::vector<mrpt::math::TPoint2D> points(current.size());
+			for (size_t k = 0; k < current.size(); ++k) current.getPoint(k, points[k].x, points[k].y);
+			keyframes.addKeyframe(poses[i], points);
+		}
 	}
 	return poses;
 }
@@ -384,7 +399,7 @@ int runLegsSuite(const std::string& dataDir, const std::string& outDir, const st
 	size_t filterScans = 0, detectScans = 0;
 
 	// 1. No people: every leg is false. Single-scan detector, and the filter
-	// (legs flagged dynamic) with the robot motion from scan-to-scan ICP.
+	// (legs flagged dynamic) with the robot motion from scan-to-keyframe-map ICP.
 	std::map<std::string, std::vector<CObservation2DRangeScan::Ptr>> bySensor;
 	for (const auto& s : readScans(dataDir + "/negative_2.rawlog")) bySensor[s->sensorLabel].push_back(s);
 	size_t negScans = 0, negLegs = 0, negDynamic = 0, negLate = 0;

@@ -259,3 +259,28 @@ TEST(DynamicObjectFilter, PairingChangesOfStaticLegsDoNotMakeAPersonDynamic)
 	EXPECT_FALSE(now.first);
 	EXPECT_EQ(now.second, 0u);
 }
+
+TEST(KalmanTracker, MetricGateDoesNotWidenWithRange)
+{
+	// A static object 4 m away, then an observation 0.5 m across (7 deg):
+	// inside the thesis' 10 deg gate (same track), outside the metric gate
+	// of 3 m/s x 0.1 s = 0.3 m (a new track).
+	CKalmanTracker::TOptions metric;
+	metric.gate_speed_mps = 3.0;
+	CKalmanTracker polar, gated(metric);
+	const CPose2D sensor;
+	std::vector<int> a, b;
+	for (int k = 0; k < 3; ++k)
+	{
+		a = polar.update({TPoint2D(4.0, 0.0)}, sensor, 0.1 * k);
+		b = gated.update({TPoint2D(4.0, 0.0)}, sensor, 0.1 * k);
+	}
+	const int idPolar = a[0], idGated = b[0];
+	a = polar.update({TPoint2D(4.0, 0.5)}, sensor, 0.3);
+	b = gated.update({TPoint2D(4.0, 0.5)}, sensor, 0.3);
+	EXPECT_EQ(a[0], idPolar);
+	EXPECT_NE(b[0], idGated);
+	// 0.2 m across (nearer to the old track than to the new one): the old track.
+	b = gated.update({TPoint2D(4.0, 0.2)}, sensor, 0.4);
+	EXPECT_EQ(b[0], idGated);
+}

@@ -63,16 +63,25 @@ void CKalmanTracker::correct(TTrack& t, const mrpt::math::TPoint2D& z) const
 	}
 }
 
-bool CKalmanTracker::inGate(const TTrack& t, const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose) const
+bool CKalmanTracker::inGate(const TTrack& t, const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose,
+							double t_s) const
 {
 	// Polar coordinates of the prediction and of the observation in the
 	// current sensor frame: eq. 88-89 with the full pose change.
 	const auto p = sensorPose.inverseComposePoint(mrpt::math::TPoint2D(t.x[0], t.x[1]));
 	const auto o = sensorPose.inverseComposePoint(z);
 	const double rp = std::hypot(p.x, p.y), ro = std::hypot(o.x, o.y);
+	const double dth = std::abs(mrpt::math::wrapToPi(std::atan2(o.y, o.x) - std::atan2(p.y, p.x)));
+	if (m_options.gate_speed_mps > 0)
+	{
+		// Metric gate (beyond the thesis): how far a leg can be from its
+		// constant-velocity prediction after the time since it was last seen,
+		// the same in range and across, whatever the distance to the sensor.
+		const double g = m_options.gate_speed_mps * std::max(t_s - t.t_seen_s, 1e-3);
+		return std::abs(ro - rp) <= g && ro * dth <= g;
+	}
 	const double widen = 1.0 + t.misses;
 	if (std::abs(ro - rp) > m_options.gate_range_m * widen) return false;
-	const double dth = std::abs(mrpt::math::wrapToPi(std::atan2(o.y, o.x) - std::atan2(p.y, p.x)));
 	const double gate = std::max(m_options.gate_bearing_rad, m_options.gate_min_cross_m / std::max(ro, 0.05));
 	return dth <= gate * widen;
 }
@@ -190,7 +199,7 @@ std::vector<int> CKalmanTracker::update(const std::vector<mrpt::math::TPoint2D>&
 	std::vector<std::tuple<double, size_t, size_t>> pairs;  // distance, track, observation
 	for (size_t ti = 0; ti < m_tracks.size(); ++ti)
 		for (size_t oi = 0; oi < observations.size(); ++oi)
-			if (inGate(m_tracks[ti], observations[oi], sensorPose))
+			if (inGate(m_tracks[ti], observations[oi], sensorPose, t_s))
 				pairs.emplace_back(std::hypot(observations[oi].x - m_tracks[ti].x[0],
 											  observations[oi].y - m_tracks[ti].x[1]),
 								   ti, oi);
