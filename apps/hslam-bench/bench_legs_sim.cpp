@@ -19,6 +19,7 @@
 #include <hslam/common/options_io.h>
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/dynamic/CDynamicObjectFilter.h>
+#include <hslam/dynamic/dynamic_profiles.h>
 #include <hslam/dynamic/occupied_cells.h>
 #include <hslam/io/CGzLineReader.h>
 #include <hslam/maps/CLaserGridInserter.h>
@@ -212,33 +213,22 @@ TSimResult runSample(const fs::path& dir, const dynamic::CDynamicObjectFilter::T
 	both.drawImage(static_cast<int>(a.getWidth()) + 10, 0, b);
 	both.textOut(5, 5, "without exclusion", mrpt::img::TColor(200, 0, 0));
 	both.textOut(static_cast<int>(a.getWidth()) + 15, 5, "with exclusion", mrpt::img::TColor(0, 130, 0));
-	if (!both.saveToFile(pngPath)) throw std::runtime_error(pngPath + ": cannot write");
+	if (!pngPath.empty() && !both.saveToFile(pngPath)) throw std::runtime_error(pngPath + ": cannot write");
 	return r;
 }
 
 double ratio(size_t a, size_t b) { return static_cast<double>(a) / static_cast<double>(std::max<size_t>(1, b)); }
-}  // namespace
 
-int runLegsSimSuite(const std::string& dataDir, const std::string& outDir, const std::string& configFile)
+TSimResult runAllSamples(const std::vector<fs::path>& samples, const dynamic::CDynamicObjectFilter::TOptions& options,
+						 const std::string& label, const std::string& pngDir)
 {
-	// Thesis defaults (the simulated LMS200 has the thesis' 1 deg), or [dynamic_objects] of configFile.
-	const auto options = loadDynamicOptions("", configFile);
-	std::vector<fs::path> samples;
-	for (const auto& e : fs::directory_iterator(dataDir))
-		if (fs::exists(e.path() / "sim.rawlog") && fs::exists(e.path() / "beam_labels.csv.gz") &&
-			fs::exists(e.path() / "people.csv.gz") && fs::exists(e.path() / "ground_truth.tum"))
-			samples.push_back(e.path());
-	std::sort(samples.begin(), samples.end());
-	if (samples.empty()) throw std::runtime_error(dataDir + ": no simulated samples (sim.rawlog + labels) found");
-	fs::create_directories(outDir);
-
 	TSimResult total;
-	std::cout << "Simulated samples (ground-truth poses; options: " << (configFile.empty() ? "thesis defaults" : configFile) << ")\n"
+	std::cout << "Simulated samples (ground-truth poses; options: " << label << ")\n"
 			  << "  sample     scans people  beam precision  recall  coverage  id switches  people cells without/with\n";
 	for (const auto& dir : samples)
 	{
 		const std::string name = dir.filename().string();
-		const auto r = runSample(dir, options, outDir + "/legs_sim_" + name + "_maps.png");
+		const auto r = runSample(dir, options, pngDir.empty() ? "" : pngDir + "/legs_sim_" + name + "_maps.png");
 		std::cout << "  " << std::left << std::setw(10) << name << std::right << std::setw(6) << r.scans
 				  << std::setw(7) << r.people << std::fixed << std::setprecision(3) << std::setw(16)
 				  << ratio(r.tp, r.tp + r.fp) << std::setw(8) << ratio(r.tp, r.tp + r.fn) << std::setw(10)
@@ -252,15 +242,45 @@ int runLegsSimSuite(const std::string& dataDir, const std::string& outDir, const
 		total.people_cells_without += r.people_cells_without, total.people_cells_with += r.people_cells_with;
 		total.filter_s += r.filter_s;
 	}
+	return total;
+}
+
+double reduction(const TSimResult& r)
+{
+	return r.people_cells_without ? 1.0 - ratio(r.people_cells_with, r.people_cells_without) : 0.0;
+}
+}  // namespace
+
+int runLegsSimSuite(const std::string& dataDir, const std::string& outDir, const std::string& configFile)
+{
+	// Defaults (or [dynamic_objects] of configFile), and for comparison the
+	// thesis rule set (the simulated LMS200 has the thesis' 1 deg).
+	const auto options = loadDynamicOptions("", configFile);
+	const auto thesis = loadDynamicOptions(dynamic::kThesisProfileIni, "");
+	std::vector<fs::path> samples;
+	for (const auto& e : fs::directory_iterator(dataDir))
+		if (fs::exists(e.path() / "sim.rawlog") && fs::exists(e.path() / "beam_labels.csv.gz") &&
+			fs::exists(e.path() / "people.csv.gz") && fs::exists(e.path() / "ground_truth.tum"))
+			samples.push_back(e.path());
+	std::sort(samples.begin(), samples.end());
+	if (samples.empty()) throw std::runtime_error(dataDir + ": no simulated samples (sim.rawlog + labels) found");
+	fs::create_directories(outDir);
+
+	const auto th = runAllSamples(samples, thesis, "thesis rule set, kThesisProfileIni", "");
+	std::cout << "  people cells reduction: " << std::setprecision(3) << reduction(th) << "\n\n";
+	const auto total = runAllSamples(samples, options, configFile.empty() ? "defaults" : configFile, outDir);
 	std::cout << "  maps side by side: " << outDir << "/legs_sim_<sample>_maps.png\n\n"
-			  << std::setprecision(4) << "sim_scans=" << total.scans << "\nsim_beam_precision="
-			  << ratio(total.tp, total.tp + total.fp) << "\nsim_beam_recall=" << ratio(total.tp, total.tp + total.fn)
+			  << std::setprecision(4) << "sim_thesis_beam_precision=" << ratio(th.tp, th.tp + th.fp)
+			  << "\nsim_thesis_beam_recall=" << ratio(th.tp, th.tp + th.fn)
+			  << "\nsim_thesis_people_cells_reduction=" << reduction(th) << "\nsim_scans=" << total.scans
+			  << "\nsim_beam_precision=" << ratio(total.tp, total.tp + total.fp)
+			  << "\nsim_beam_recall=" << ratio(total.tp, total.tp + total.fn)
 			  << "\nsim_person_coverage=" << ratio(total.covered_frames, total.person_frames)
 			  << "\nsim_id_switches_per_person=" << ratio(total.id_switches, total.people)
 			  << "\nsim_id_switches_within_memory_per_person=" << ratio(total.id_switches_short, total.people)
 			  << "\nsim_people_cells_without=" << total.people_cells_without
-			  << "\nsim_people_cells_with=" << total.people_cells_with << "\nsim_people_cells_reduction="
-			  << (total.people_cells_without ? 1.0 - ratio(total.people_cells_with, total.people_cells_without) : 0.0)
+			  << "\nsim_people_cells_with=" << total.people_cells_with
+			  << "\nsim_people_cells_reduction=" << reduction(total)
 			  << "\nsim_filter_us_per_scan=" << 1e6 * total.filter_s / std::max<size_t>(1, total.scans) << "\n";
 	return 0;
 }

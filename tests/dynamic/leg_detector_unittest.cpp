@@ -8,18 +8,31 @@
 #include <hslam/testing/test_paths.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
+#include <limits>
+#include <tuple>
+
 using namespace hslam::dynamic;
 using namespace hslam::dynamic::testutils;
 
 namespace
 {
 constexpr double kDeg = M_PI / 180;
+
+CDynamicObjectFilter::TOptions profile(const char* ini)
+{
+	mrpt::config::CConfigFileMemory cfg{std::string(ini)};
+	CDynamicObjectFilter::TOptions options;
+	hslam::common::loadOptions(options, cfg, "dynamic_objects");
+	return options;
 }
+
+CLegDetector thesisDetector() { return CLegDetector(profile(kThesisProfileIni).detector); }
+}  // namespace
 
 TEST(FindInterv, ReproducesThesisTableAtOneDegree)
 {
 	// Appendix H.3: 10 beams under 1.0 m, 8 to 1.2 m, 6 to 1.5 m, 4 to 2.2 m, 3 beyond.
-	const CLegDetector d;
+	const CLegDetector d = thesisDetector();
 	const std::vector<std::pair<double, int>> table = {{0.3, 10}, {0.99, 10}, {1.0, 8},  {1.19, 8}, {1.2, 6},
 													   {1.49, 6}, {1.5, 4},	  {2.19, 4}, {2.2, 3},	{3.19, 3}};
 	for (const auto& [r, n] : table) EXPECT_EQ(d.findInterv(r, 1.0 * kDeg), n) << "range " << r;
@@ -28,7 +41,7 @@ TEST(FindInterv, ReproducesThesisTableAtOneDegree)
 TEST(FindInterv, ScalesWithAngularResolution)
 {
 	// floor(0.18 / (band end * step)), band ends 1.0 1.2 1.5 2.2 3.2 m.
-	const CLegDetector d;
+	const CLegDetector d = thesisDetector();
 	const std::vector<double> ranges = {0.9, 1.1, 1.3, 2.0, 2.5};
 	const std::vector<int> half = {20, 17, 13, 9, 6}, quarter = {41, 34, 27, 18, 12};
 	for (size_t i = 0; i < ranges.size(); ++i)
@@ -40,6 +53,53 @@ TEST(FindInterv, ScalesWithAngularResolution)
 	const auto scan = castScan({}, {}, room(5), 181, M_PI);
 	EXPECT_NEAR(angularStep(scan), 1.0 * kDeg, 1e-9);
 	EXPECT_EQ(d.findInterv(1.1, angularStep(scan)), 8);
+}
+
+TEST(FindInterv, WindowFromLegWidthRange)
+{
+	// Defaults: legs 0.08-0.20 m wide (figure 150). At 1 deg the least count
+	// is floor(0.08 / (band end * step)), never below 3; the most count
+	// ceil(0.20 / (band start * step)) + 2 (one mixed pixel at each end),
+	// no bound in the first band (0-1.0 m) and none with max_leg_width_m = 0.
+	const CLegDetector d;
+	const std::vector<std::tuple<double, int, int>> table = {
+		{1.1, 3, 14}, {1.3, 3, 12}, {0.9, 4, std::numeric_limits<int>::max()}, {2.0, 3, 10}, {3.0, 3, 8}};
+	for (const auto& [r, lo, hi] : table)
+	{
+		EXPECT_EQ(d.findInterv(r, 1.0 * kDeg), lo) << "range " << r;
+		EXPECT_EQ(d.maxBeams(r, 1.0 * kDeg), hi) << "range " << r;
+	}
+	// 0.25 deg: 0.08 / (1.2 * 0.25 deg) = 15.3 -> 15 beams at least, at most ceil(45.8) + 2 = 48.
+	EXPECT_EQ(d.findInterv(1.1, 0.25 * kDeg), 15);
+	EXPECT_EQ(d.maxBeams(1.1, 0.25 * kDeg), 48);
+	EXPECT_EQ(thesisDetector().maxBeams(1.1, 1.0 * kDeg), std::numeric_limits<int>::max());
+}
+
+TEST(LegDetector, ThinLegPassesTheWidthRangeNotTheThesisWidth)
+{
+	// A 12 cm leg (the simulator's) 1.3 m ahead: ~5 beams at 1 deg, 10 at
+	// 0.5 deg. The thesis' single 0.18 m asks for 6 (resp. 13) and misses it;
+	// the range 0.08-0.20 m asks for 3 (resp. 7) and finds it.
+	const std::vector<TCircle> leg = {{1.3, 0.2, 0.06}};
+	const std::vector<TWall> wall = {{4.3, -5, 4.3, 5}};
+	for (size_t beams : {181u, 361u})
+	{
+		const auto scan = castScan({}, leg, wall, beams, M_PI);
+		const auto found = CLegDetector().detect(scan);
+		ASSERT_EQ(found.size(), 1u) << beams << " beams";
+		EXPECT_NEAR(found[0].y_m, 0.2, 0.03);
+		EXPECT_TRUE(thesisDetector().detect(scan).empty()) << beams << " beams";
+		bool tooFew = false;
+		for (const auto& c : thesisDetector().candidates(scan))
+			tooFew |= std::hypot(c.segment.x_m - 1.25, c.segment.y_m - 0.2) < 0.1 && c.verdict == ELegReject::too_few_beams;
+		EXPECT_TRUE(tooFew) << beams << " beams";
+	}
+	// A 0.30 m post at 1.3 m has more beams than the widest leg could give.
+	const auto post = castScan({}, {{1.3, 0.2, 0.15}}, wall);
+	EXPECT_TRUE(CLegDetector().detect(post).empty());
+	bool tooMany = false;
+	for (const auto& c : CLegDetector().candidates(post)) tooMany |= c.verdict == ELegReject::too_many_beams;
+	EXPECT_TRUE(tooMany);
 }
 
 TEST(FindInterv, RejectsMalformedBands)
@@ -83,10 +143,7 @@ TEST(LegDetector, FindsAnnotatedLegInRealHokuyoScan)
 	ASSERT_TRUE(scan);
 	ASSERT_EQ(scan->getScanSize(), 768u);
 
-	mrpt::config::CConfigFileMemory cfg(std::string{kHokuyoLegsProfileIni});
-	CDynamicObjectFilter::TOptions options;
-	hslam::common::loadOptions(options, cfg, "dynamic_objects");
-	const CLegDetector hokuyo(options.detector);
+	const CLegDetector hokuyo(profile(kHokuyoLegsProfileIni).detector);
 	const auto legs = hokuyo.detect(*scan);
 	size_t near = 0;
 	for (const auto& l : legs) near += std::hypot(l.x_m - 1.9889, l.y_m - 0.0976) < 0.1;
@@ -95,7 +152,7 @@ TEST(LegDetector, FindsAnnotatedLegInRealHokuyoScan)
 
 	// The thesis defaults (1 deg SICK, 0.18 m) ask for floor(0.18/(2.2 * 0.35 deg)) = 13
 	// beams at 2 m; this leg has fewer: the reason for the Hokuyo profile.
-	const CLegDetector thesis;
+	const CLegDetector thesis = thesisDetector();
 	EXPECT_EQ(thesis.findInterv(1.95, angularStep(*scan)), 13);
 	size_t thesisNear = 0;
 	for (const auto& l : thesis.detect(*scan)) thesisNear += std::hypot(l.x_m - 1.9889, l.y_m - 0.0976) < 0.1;

@@ -20,6 +20,15 @@ maps::CTiledOccupancyGrid::TOptions seenGridOptions(const CDynamicObjectFilter::
 	return g;
 }
 
+/** Person tracks: with person_needs_dynamic_leg at least one observation
+ * backed by a dynamic leg track is needed (passed as motion evidence). */
+CKalmanTracker::TOptions personTrackerOptions(const CDynamicObjectFilter::TOptions& o)
+{
+	CKalmanTracker::TOptions t = o.tracker;
+	if (o.person_needs_dynamic_leg) t.confirm_free_hits = std::max(1, t.confirm_free_hits);
+	return t;
+}
+
 maps::CLaserGridInserter::TOptions seenInserterOptions(const CDynamicObjectFilter::TOptions& o)
 {
 	maps::CLaserGridInserter::TOptions l;
@@ -33,7 +42,7 @@ CDynamicObjectFilter::CDynamicObjectFilter(const TOptions& options)
 	: m_options(options),
 	  m_detector(options.detector),
 	  m_legs(options.tracker),
-	  m_persons(options.tracker),
+	  m_persons(personTrackerOptions(options)),
 	  m_seen(seenGridOptions(options)),
 	  m_seenInserter(seenInserterOptions(options))
 {
@@ -46,6 +55,16 @@ bool CDynamicObjectFilter::seenFreeBefore(const mrpt::math::TPoint2D& leg, const
 	const double k = m_options.free_space_behind_m / r;
 	const auto c = m_seen.geometry().cellOf(leg.x + k * dx, leg.y + k * dy);
 	return m_seen.isObserved(c) && m_seen.occupancyProbability(c) < m_options.free_space_threshold;
+}
+
+double CDynamicObjectFilter::maskRadius(const TTrack& t) const
+{
+	// A person is a disc around its track: both legs (each at most half the
+	// pairing distance from the midpoint, plus a leg radius = mask_radius_m)
+	// where the track is believed to be (its position standard deviation,
+	// which grows while the track is missed).
+	const double sigma = std::sqrt(0.5 * std::max(0.0, t.P(0, 0) + t.P(1, 1)));
+	return m_options.mask_radius_m + m_options.mask_sigma * sigma;
 }
 
 void CDynamicObjectFilter::pairLegs(const std::vector<mrpt::math::TPoint2D>& legs,
@@ -98,11 +117,20 @@ const TDynamicFrame& CDynamicObjectFilter::process(const mrpt::obs::CObservation
 	std::vector<mrpt::math::TPoint2D> personsWorld;
 	std::vector<int> personOfLeg;
 	pairLegs(legsWorld, personsWorld, personOfLeg);
-	std::vector<bool> personEvidence(personsWorld.size(), false);
+	// Person evidence: one of its legs is where free space was and, with
+	// person_needs_dynamic_leg, on a leg track confirmed dynamic itself (a
+	// pair of static legs changes its midpoint when the pairing changes).
+	std::vector<bool> personEvidence(personsWorld.size(), false);  // every person has a leg
 	for (size_t i = 0; i < legsWorld.size(); ++i)
-		if (m_frame.leg_in_free_space[i]) personEvidence[static_cast<size_t>(personOfLeg[i])] = true;
+	{
+		const TTrack* leg = m_legs.find(m_frame.leg_track[i]);
+		const bool legDynamic = leg && leg->state == ETrackState::dynamic;
+		if ((!useEvidence || m_frame.leg_in_free_space[i]) && (!m_options.person_needs_dynamic_leg || legDynamic))
+			personEvidence[static_cast<size_t>(personOfLeg[i])] = true;
+	}
+	const bool usePersonEvidence = useEvidence || m_options.person_needs_dynamic_leg;
 	const std::vector<int> personIds =
-		m_persons.update(personsWorld, sensorPose, t_s, useEvidence ? &personEvidence : nullptr);
+		m_persons.update(personsWorld, sensorPose, t_s, usePersonEvidence ? &personEvidence : nullptr);
 
 	m_frame.person_track.resize(m_frame.legs.size());
 	m_frame.leg_is_dynamic.resize(m_frame.legs.size());
@@ -142,11 +170,16 @@ void CDynamicObjectFilter::collectLateExclusions(const mrpt::obs::CObservation2D
 		if (!m_frame.leg_is_dynamic[i])
 			for (size_t b = m_frame.legs[i].first_beam; b <= m_frame.legs[i].last_beam; ++b)
 				personOfBeam[b] = m_frame.person_track[i];
-	std::vector<std::pair<int, mrpt::math::TPoint2D>> tentative;  // id, robot-frame position
+	struct TDisc
+	{
+		int id;
+		mrpt::math::TPoint2D centre;  // robot frame
+		double r2;
+	};
+	std::vector<TDisc> tentative;
 	for (const auto& t : m_frame.person_tracks)
 		if (t.state == ETrackState::tentative && t.observation >= 0)
-			tentative.push_back({t.id, robotPose.inverseComposePoint(t.position())});
-	const double r2 = m_options.mask_radius_m * m_options.mask_radius_m;
+			tentative.push_back({t.id, robotPose.inverseComposePoint(t.position()), std::pow(maskRadius(t), 2)});
 	const double sx = scan.sensorPose.x(), sy = scan.sensorPose.y();
 	const size_t cap = static_cast<size_t>(m_options.retro_clear_max_points);
 	for (size_t b = 0; b < n; ++b)
@@ -157,8 +190,8 @@ void CDynamicObjectFilter::collectLateExclusions(const mrpt::obs::CObservation2D
 		const double x = sx + r * std::cos(a), y = sy + r * std::sin(a);
 		for (size_t k = 0; k < tentative.size() && personOfBeam[b] < 0; ++k)
 		{
-			const auto& p = tentative[k].second;
-			if ((x - p.x) * (x - p.x) + (y - p.y) * (y - p.y) <= r2) personOfBeam[b] = tentative[k].first;
+			const auto& p = tentative[k].centre;
+			if ((x - p.x) * (x - p.x) + (y - p.y) * (y - p.y) <= tentative[k].r2) personOfBeam[b] = tentative[k].id;
 		}
 		if (personOfBeam[b] < 0) continue;
 		auto& pending = m_pendingHits[personOfBeam[b]];
@@ -187,11 +220,11 @@ void CDynamicObjectFilter::buildMask(const mrpt::obs::CObservation2DRangeScan& s
 		for (size_t b = from; b <= to; ++b) mask[b] = true;
 	}
 	// Beams ending near a dynamic person (robot frame positions of the tracks).
-	std::vector<mrpt::math::TPoint2D> persons;
+	std::vector<std::pair<mrpt::math::TPoint2D, double>> persons;  // robot-frame centre, radius^2
 	for (const auto& t : m_frame.person_tracks)
-		if (t.state == ETrackState::dynamic) persons.push_back(robotPose.inverseComposePoint(t.position()));
-	if (persons.empty() || m_options.mask_radius_m <= 0) return;
-	const double r2 = m_options.mask_radius_m * m_options.mask_radius_m;
+		if (t.state == ETrackState::dynamic && m_options.mask_radius_m > 0)
+			persons.push_back({robotPose.inverseComposePoint(t.position()), std::pow(maskRadius(t), 2)});
+	if (persons.empty()) return;
 	const double sx = scan.sensorPose.x(), sy = scan.sensorPose.y();
 	for (size_t b = 0; b < n; ++b)
 	{
@@ -199,7 +232,7 @@ void CDynamicObjectFilter::buildMask(const mrpt::obs::CObservation2DRangeScan& s
 		if (mask[b] || !scan.getScanRangeValidity(b) || !std::isfinite(r)) continue;
 		const double a = beamBearing(scan, b);
 		const double x = sx + r * std::cos(a), y = sy + r * std::sin(a);
-		for (const auto& p : persons)
+		for (const auto& [p, r2] : persons)
 			if ((x - p.x) * (x - p.x) + (y - p.y) * (y - p.y) <= r2)
 			{
 				mask[b] = true;

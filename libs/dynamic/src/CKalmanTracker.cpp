@@ -63,16 +63,25 @@ void CKalmanTracker::correct(TTrack& t, const mrpt::math::TPoint2D& z) const
 	}
 }
 
-bool CKalmanTracker::inGate(const TTrack& t, const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose) const
+bool CKalmanTracker::inGate(const TTrack& t, const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose,
+							double t_s) const
 {
 	// Polar coordinates of the prediction and of the observation in the
 	// current sensor frame: eq. 88-89 with the full pose change.
 	const auto p = sensorPose.inverseComposePoint(mrpt::math::TPoint2D(t.x[0], t.x[1]));
 	const auto o = sensorPose.inverseComposePoint(z);
 	const double rp = std::hypot(p.x, p.y), ro = std::hypot(o.x, o.y);
+	const double dth = std::abs(mrpt::math::wrapToPi(std::atan2(o.y, o.x) - std::atan2(p.y, p.x)));
+	if (m_options.gate_speed_mps > 0)
+	{
+		// Metric gate (beyond the thesis): how far a leg can be from its
+		// constant-velocity prediction after the time since it was last seen,
+		// the same in range and across, whatever the distance to the sensor.
+		const double g = m_options.gate_speed_mps * std::max(t_s - t.t_seen_s, 1e-3);
+		return std::abs(ro - rp) <= g && ro * dth <= g;
+	}
 	const double widen = 1.0 + t.misses;
 	if (std::abs(ro - rp) > m_options.gate_range_m * widen) return false;
-	const double dth = std::abs(mrpt::math::wrapToPi(std::atan2(o.y, o.x) - std::atan2(p.y, p.x)));
 	const double gate = std::max(m_options.gate_bearing_rad, m_options.gate_min_cross_m / std::max(ro, 0.05));
 	return dth <= gate * widen;
 }
@@ -88,7 +97,7 @@ void CKalmanTracker::updatePolar(TTrack& t, const mrpt::poses::CPose2D& sensorPo
 	t.v_angular_radps = (-t.x[2] * uy + t.x[3] * ux) / t.range_m;
 }
 
-TTrack CKalmanTracker::newTrack(const mrpt::math::TPoint2D& z, double t_s)
+TTrack CKalmanTracker::newTrack(const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose, double t_s)
 {
 	TTrack t;
 	t.id = m_nextId++;
@@ -99,17 +108,42 @@ TTrack CKalmanTracker::newTrack(const mrpt::math::TPoint2D& z, double t_s)
 	t.t_last_s = t.t_seen_s = t_s;
 	t.hits = 1;
 	t.birth_m = z;
+	t.sensor_birth_m = sensorPose.inverseComposePoint(z);
 	return t;
 }
 
-void CKalmanTracker::registerHit(TTrack& t, const mrpt::math::TPoint2D& z, bool evidence) const
+bool CKalmanTracker::significantSpeed(const TTrack& t) const
+{
+	// Speed squared in units of its own covariance (Mahalanobis distance of
+	// the velocity from zero): pose noise and detector jitter give a speed
+	// the filter itself deems uncertain; a walking person a sustained one.
+	const Eigen::Vector2d v(t.x[2], t.x[3]);
+	const Eigen::Matrix2d Pv = t.P.bottomRightCorner<2, 2>();
+	const double sigma2 = m_options.confirm_speed_sigma * m_options.confirm_speed_sigma;
+	return v.norm() >= m_options.confirm_speed_mps && v.dot(Pv.ldlt().solve(v)) >= sigma2;
+}
+
+bool CKalmanTracker::meetsConfirmation(const TTrack& t) const
+{
+	const auto& o = m_options;
+	// Moved in the world (not static) AND relative to the sensor (not a part
+	// of the robot or something it carries, which moves with it).
+	const bool relative = !o.confirm_relative_motion || t.sensor_travel_m >= o.confirm_travel_m;
+	return t.travel_m >= o.confirm_travel_m && relative && t.hits >= o.confirm_hits &&
+		   t.free_hits >= o.confirm_free_hits && t.moving_frames >= o.confirm_moving_frames;
+}
+
+void CKalmanTracker::registerHit(TTrack& t, const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose,
+								 bool evidence) const
 {
 	++t.hits;
 	t.misses = 0;
 	t.free_hits += evidence;
 	t.travel_m = std::max(t.travel_m, std::hypot(z.x - t.birth_m.x, z.y - t.birth_m.y));
-	if (t.travel_m >= m_options.confirm_travel_m && t.hits >= m_options.confirm_hits &&
-		t.free_hits >= m_options.confirm_free_hits)
+	const auto zs = sensorPose.inverseComposePoint(z);
+	t.sensor_travel_m = std::max(t.sensor_travel_m, std::hypot(zs.x - t.sensor_birth_m.x, zs.y - t.sensor_birth_m.y));
+	t.moving_frames = significantSpeed(t) ? t.moving_frames + 1 : 0;
+	if (meetsConfirmation(t))
 		t.state = ETrackState::dynamic;
 	else if (t.state == ETrackState::tentative && t.hits >= m_options.ghost_after_frames)
 		t.state = ETrackState::ghost;
@@ -142,9 +176,12 @@ void CKalmanTracker::takeOverFromMemory(double t_s, std::vector<int>& owner)
 		}
 		std::replace(owner.begin(), owner.end(), heir->id, old.id);
 		heir->id = old.id;
-		if (heir->free_hits >= m_options.confirm_free_hits) heir->state = ETrackState::dynamic;
+		// The identity is taken over at once; the dynamic state only when the
+		// heir itself passes the confirmation rule with the world travel of
+		// the old track (clutter next to a lost person must not inherit it).
 		heir->birth_m = old.birth_m;
 		heir->travel_m = std::max(heir->travel_m, old.travel_m);
+		if (meetsConfirmation(*heir)) heir->state = ETrackState::dynamic;
 		++m_reidentified;
 		m = m_memory.erase(m);
 	}
@@ -162,7 +199,7 @@ std::vector<int> CKalmanTracker::update(const std::vector<mrpt::math::TPoint2D>&
 	std::vector<std::tuple<double, size_t, size_t>> pairs;  // distance, track, observation
 	for (size_t ti = 0; ti < m_tracks.size(); ++ti)
 		for (size_t oi = 0; oi < observations.size(); ++oi)
-			if (inGate(m_tracks[ti], observations[oi], sensorPose))
+			if (inGate(m_tracks[ti], observations[oi], sensorPose, t_s))
 				pairs.emplace_back(std::hypot(observations[oi].x - m_tracks[ti].x[0],
 											  observations[oi].y - m_tracks[ti].x[1]),
 								   ti, oi);
@@ -179,7 +216,7 @@ std::vector<int> CKalmanTracker::update(const std::vector<mrpt::math::TPoint2D>&
 		t.observation = static_cast<int>(oi);
 		t.t_seen_s = t_s;
 		correct(t, observations[oi]);
-		registerHit(t, observations[oi], evidence(oi));
+		registerHit(t, observations[oi], sensorPose, evidence(oi));
 	}
 
 	// Missed tracks: null counter; dropped after max_misses (dynamic ones are remembered).
@@ -220,19 +257,22 @@ std::vector<int> CKalmanTracker::update(const std::vector<mrpt::math::TPoint2D>&
 				best = m;
 			}
 		}
-		TTrack t = newTrack(z, t_s);
+		TTrack t = newTrack(z, sensorPose, t_s);
 		t.free_hits = evidence(oi);
 		if (best != m_memory.end())
 		{
 			--m_nextId;  // the remembered id is reused
 			t.id = best->track.id;
-			// Identity comes back at once; the dynamic state only with fresh
-			// motion evidence (else clutter near a lost person would inherit it).
-			t.state = (!motionEvidence || evidence(oi)) ? ETrackState::dynamic : ETrackState::tentative;
+			// Identity comes back at once; the dynamic state when the new track
+			// passes the confirmation rule with the old track's world travel
+			// and counts (at once for the thesis rule; with the relative-motion
+			// test once it has moved relative to the sensor; else clutter next
+			// to a lost person, or the robot's own body, would inherit it).
 			t.birth_m = best->track.birth_m;
 			t.travel_m = best->track.travel_m;
 			t.hits = best->track.hits + 1;
 			t.free_hits = best->track.free_hits + evidence(oi);
+			if ((!motionEvidence || evidence(oi)) && meetsConfirmation(t)) t.state = ETrackState::dynamic;
 			m_memory.erase(best);
 			++m_reidentified;
 		}

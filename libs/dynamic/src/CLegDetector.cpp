@@ -1,6 +1,7 @@
 #include <hslam/dynamic/CLegDetector.h>
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -86,6 +87,7 @@ const char* toString(ELegReject r)
 	{
 		case ELegReject::accepted: return "accepted";
 		case ELegReject::too_few_beams: return "too_few_beams";
+		case ELegReject::too_many_beams: return "too_many_beams";
 		case ELegReject::no_dip_edge: return "no_dip_edge";
 		case ELegReject::width: return "width";
 		case ELegReject::depth: return "depth";
@@ -139,8 +141,24 @@ int CLegDetector::findInterv(double range_m, double angularStep_rad) const
 			bandEnd = limit;
 			break;
 		}
-	const double beams = m_options.leg_width_m / (bandEnd * angularStep_rad);
+	const double beams = m_options.min_leg_width_m / (bandEnd * angularStep_rad);
 	return std::max(m_options.min_beams, static_cast<int>(std::floor(beams + 1e-9)));
+}
+
+int CLegDetector::maxBeams(double range_m, double angularStep_rad) const
+{
+	if (m_options.max_leg_width_m <= 0) return std::numeric_limits<int>::max();
+	// The near limit of the band holding range_m (0 for the first band: no
+	// bound there; beyond max_range_m the range itself).
+	double bandStart = 0;
+	for (double limit : m_bandLimits_m)
+	{
+		if (range_m < limit) break;
+		bandStart = limit;
+	}
+	if (range_m >= m_bandLimits_m.back()) bandStart = range_m;
+	if (bandStart <= 0) return std::numeric_limits<int>::max();
+	return static_cast<int>(std::ceil(m_options.max_leg_width_m / (bandStart * angularStep_rad) - 1e-9)) + 2;
 }
 
 std::vector<TSegmentCandidate> CLegDetector::candidates(const mrpt::obs::CObservation2DRangeScan& scan) const
@@ -172,6 +190,8 @@ std::vector<TSegmentCandidate> CLegDetector::candidates(const mrpt::obs::CObserv
 						  static_cast<int>(standsInFront(beams, last, static_cast<long>(last) + 1, o.edge_jump_m));
 		if (static_cast<int>(c.segment.beams()) < findInterv(beams[i].r, step))
 			c.verdict = ELegReject::too_few_beams;
+		else if (static_cast<int>(c.segment.beams()) > maxBeams(beams[i].r, step))
+			c.verdict = ELegReject::too_many_beams;
 		else if (edges < o.min_dip_edges)
 			c.verdict = ELegReject::no_dip_edge;
 		else if (c.segment.width_m < o.min_width_m || c.segment.width_m > o.max_width_m)

@@ -21,9 +21,15 @@
  *    hopping between static clutter (chair legs seen from a moving robot)
  *    is not confirmed although it "moves".
  *  - A detection is dynamic if its leg track or its person track is dynamic.
+ *    With person_needs_dynamic_leg (beyond the thesis) a person track needs,
+ *    as its motion evidence, an observation whose leg is on a leg track
+ *    confirmed dynamic itself: the midpoint of two static chair legs jumps
+ *    whenever the pairing changes (pair <-> single leg) and would "move".
  *  - Beam mask: the beams of dynamic detections (plus mask_margin_beams on
  *    each side: the mixed pixels at a leg's edges), and every beam ending
- *    within mask_radius_m of a dynamic person track, also one missed in this
+ *    in a person-sized disc around a dynamic person track (radius
+ *    mask_radius_m = half the pairing distance + half the widest leg, plus
+ *    mask_sigma standard deviations of the track position), also one missed in this
  *    frame (its Kalman prediction), which covers legs that merged into a
  *    blob the detector rejects.
  *  - Late exclusion (the issue's "clear previously inserted cells"): a track
@@ -75,7 +81,9 @@ class CDynamicObjectFilter
 		CLegDetector::TOptions detector;
 		CKalmanTracker::TOptions tracker;  //!< shared by leg and person tracks
 		double pair_max_distance_m = 0.6;  //!< two legs of one person (step length)
-		double mask_radius_m = 0.35;  //!< beams ending this near a dynamic person are masked (half the pairing distance + a leg radius)
+		bool person_needs_dynamic_leg = true;  //!< a person is confirmed only with a leg confirmed dynamic itself
+		double mask_radius_m = 0.40;  //!< person disc: half the pairing distance + half the widest leg (0.3 + 0.1 m)
+		double mask_sigma = 3.0;  //!< ... widened by this many standard deviations of the track's Kalman position
 		int mask_margin_beams = 1;  //!< extra beams masked on each side of a dynamic leg
 		double free_space_resolution_m = 0.1;  //!< cell side of the filter's own grid
 		double free_space_max_range_m = 8.0;  //!< beams inserted into it up to this range
@@ -90,7 +98,9 @@ class CDynamicObjectFilter
 			detector.visit(v);
 			tracker.visit(v);
 			v.real("pair_max_distance_m", pair_max_distance_m, 0.0, 5.0);
+			v.flag("person_needs_dynamic_leg", person_needs_dynamic_leg);
 			v.real("mask_radius_m", mask_radius_m, 0.0, 5.0);
+			v.real("mask_sigma", mask_sigma, 0.0, 10.0);
 			v.integer("mask_margin_beams", mask_margin_beams, 0, 100);
 			v.real("free_space_resolution_m", free_space_resolution_m, 0.01, 1.0);
 			v.real("free_space_max_range_m", free_space_max_range_m, 0.1, 100.0);
@@ -120,6 +130,8 @@ class CDynamicObjectFilter
 				  std::vector<int>& personOfLeg) const;
 	void buildMask(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& robotPose);
 	void collectLateExclusions(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& robotPose);
+	/** Radius of the disc around person track `t` whose beams are masked. */
+	double maskRadius(const TTrack& t) const;
 	bool seenFreeBefore(const mrpt::math::TPoint2D& legWorld, const mrpt::poses::CPose2D& sensorPose) const;
 
 	TOptions m_options;

@@ -18,21 +18,34 @@
  *  - Association in polar coordinates of the current sensor frame, as in
  *    the thesis: |r - r_pred| <= gate_range_m and |theta - theta_pred| <=
  *    gate_bearing_deg (H.1: 10 deg), both widened by the number of missed
- *    frames; nearest pairs first (greedy, one to one).
+ *    frames; nearest pairs first (greedy, one to one). Optionally
+ *    (gate_speed_mps > 0, beyond the thesis) a metric gate instead: range
+ *    and cross-range distance to the prediction <= gate_speed_mps x the time
+ *    since the track was last seen, the same at any range (10 deg is 0.17 m
+ *    at 1 m but 0.7 m at 4 m, wide enough to hop between chair legs).
  *  - Life cycle: tentative -> dynamic once the track has moved
  *    confirm_travel_m from where it was born (seen in >= confirm_hits
  *    frames) and, if confirm_free_hits > 0, was seen that many times where
  *    the sensor had seen free space before (beyond the thesis: a track
  *    hopping between static clutter also "moves", but never into space
- *    that was free); a track still short of that after ghost_after_frames hits
+ *    that was free). Also beyond the thesis, two checks that what "moved"
+ *    is not pose error or the robot itself: the speed must be sustained
+ *    (confirm_moving_frames consecutive hits with a Kalman speed of at
+ *    least confirm_speed_mps and confirm_speed_sigma standard deviations of
+ *    its own covariance: pose drift moves static things slowly, people
+ *    walk at 0.5-1.5 m/s), and with confirm_relative_motion the track must
+ *    have moved confirm_travel_m in the sensor frame too (a part of the
+ *    robot moves with it in the world but not relative to it; the rear
+ *    laser of the legs data sees one). A track still short of that after ghost_after_frames hits
  *    becomes static (a ghost: never reported as dynamic, it may still turn
  *    dynamic if it starts moving); max_misses consecutive missed frames drop
  *    a track (thesis: 3).
  *  - Memory (beyond the thesis): a dropped dynamic track is remembered for
  *    memory_s; a new observation within memory_gate_m of where it was
  *    lost (or of its constant-velocity extrapolation) takes over its id and
- *    dynamic state (the state only if the observation has motion evidence,
- *    when evidence is given), so a person reappearing after an occlusion
+ *    world travel; it is dynamic again once it passes the confirmation
+ *    rule with that travel (not blindly: clutter next to a lost person or
+ *    the robot's body would inherit the state), so a person reappearing after an occlusion
  *    keeps its identity. Likewise a younger track (not a ghost) near where
  *    a dropped dynamic track would be takes over its id (the observation
  *    had jumped out of the old track's gate).
@@ -69,6 +82,9 @@ struct TTrack
 	mrpt::math::TPoint2D birth_m;  //!< first observed world position
 	double travel_m = 0;  //!< largest distance of an observation from birth_m
 	int free_hits = 0;  //!< observations that came with motion evidence (see update())
+	mrpt::math::TPoint2D sensor_birth_m;  //!< first observed position in the sensor frame of that scan
+	double sensor_travel_m = 0;  //!< largest distance of an observation from sensor_birth_m, in the sensor frame
+	int moving_frames = 0;  //!< consecutive hits with a significant speed (see confirm_speed_sigma)
 	int observation = -1;  //!< index of the observation associated in the last update, -1 if missed
 	/** Polar state in the sensor frame of the last update (thesis H.1 obj[]). */
 	double range_m = 0, bearing_rad = 0, v_radial_mps = 0, v_angular_radps = 0;
@@ -85,6 +101,7 @@ class CKalmanTracker
 		double gate_range_m = 0.4;  //!< polar gate, range part (H.1 uses 1.3 x robot travel)
 		double gate_bearing_rad = 10.0 * M_PI / 180;  //!< polar gate, bearing part (H.1: 10 deg)
 		double gate_min_cross_m = 0.25;  //!< the bearing gate never narrower than this across the beam (m)
+		double gate_speed_mps = 0;  //!< > 0: metric gate instead, |dr| and cross-range <= this x time since last seen
 		int max_misses = 3;  //!< thesis null counter: dropped after 3 missed frames
 		double confirm_travel_m = 0.20;  //!< distance from birth that makes a track dynamic
 		int confirm_hits = 2;  //!< observations needed before a track can be dynamic
@@ -95,6 +112,10 @@ class CKalmanTracker
 		double memory_s = 2.0;  //!< how long a lost dynamic track can be re-identified
 		double memory_gate_m = 0.7;  //!< re-identification radius
 		int confirm_free_hits = 1;  //!< observations with motion evidence needed to confirm (0: thesis rule; waived when update() gets no evidence)
+		int confirm_moving_frames = 2;  //!< consecutive hits with a significant speed needed to confirm (0: off, thesis rule)
+		double confirm_speed_mps = 0.2;  //!< "significant speed": at least this fast ...
+		double confirm_speed_sigma = 1.0;  //!< ... and this many standard deviations (Kalman covariance) above zero
+		bool confirm_relative_motion = true;  //!< also require confirm_travel_m in the sensor frame (not attached to the robot; thesis: no)
 
 		template <class V>
 		void visit(V& v)
@@ -102,6 +123,7 @@ class CKalmanTracker
 			v.real("gate_range_m", gate_range_m, 0.01, 10.0);
 			v.degrees("gate_bearing_deg", gate_bearing_rad, 0.1, 180.0);
 			v.real("gate_min_cross_m", gate_min_cross_m, 0.0, 10.0);
+			v.real("gate_speed_mps", gate_speed_mps, 0.0, 100.0);
 			v.integer("max_misses", max_misses, 1, 1000);
 			v.real("confirm_travel_m", confirm_travel_m, 0.0, 10.0);
 			v.integer("confirm_hits", confirm_hits, 1, 1000);
@@ -112,6 +134,10 @@ class CKalmanTracker
 			v.real("memory_s", memory_s, 0.0, 3600.0);
 			v.real("memory_gate_m", memory_gate_m, 0.0, 100.0);
 			v.integer("confirm_free_hits", confirm_free_hits, 0, 1000);
+			v.integer("confirm_moving_frames", confirm_moving_frames, 0, 1000);
+			v.real("confirm_speed_mps", confirm_speed_mps, 0.0, 100.0);
+			v.real("confirm_speed_sigma", confirm_speed_sigma, 0.0, 100.0);
+			v.flag("confirm_relative_motion", confirm_relative_motion);
 		}
 	};
 
@@ -147,10 +173,14 @@ class CKalmanTracker
 
 	void predict(TTrack& t, double t_s) const;
 	void correct(TTrack& t, const mrpt::math::TPoint2D& z) const;
-	bool inGate(const TTrack& t, const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose) const;
+	bool inGate(const TTrack& t, const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose,
+				double t_s) const;
 	void updatePolar(TTrack& t, const mrpt::poses::CPose2D& sensorPose) const;
-	TTrack newTrack(const mrpt::math::TPoint2D& z, double t_s);
-	void registerHit(TTrack& t, const mrpt::math::TPoint2D& z, bool evidence) const;
+	TTrack newTrack(const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose, double t_s);
+	void registerHit(TTrack& t, const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose,
+					 bool evidence) const;
+	bool significantSpeed(const TTrack& t) const;
+	bool meetsConfirmation(const TTrack& t) const;
 	void takeOverFromMemory(double t_s, std::vector<int>& owner);
 
 	TOptions m_options;

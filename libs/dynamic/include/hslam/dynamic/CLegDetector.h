@@ -7,13 +7,20 @@
  *     range differs from the previous one by less than max_range_jump_m
  *     (120 mm) and its point stays within max_segment_length_m (300 mm) of the
  *     segment's first point.
- *  2. Beam count (H.3 find_interv): the segment must have at least
- *     findInterv(range of its first beam) beams. The thesis table (1 deg
- *     scanner: 10 beams under 1.0 m, 8 to 1.2 m, 6 to 1.5 m, 4 to 2.2 m, 3
- *     beyond) is the number of beams a leg of width leg_width_m = 0.18 m
- *     subtends at the FAR edge of each range band, floor(w / (r_band_max *
- *     dtheta)), with the last band ending at max_range_m. Derived that way the
- *     same bands work for any angular resolution (0.5, 0.35, 0.25 deg ...).
+ *  2. Beam count (H.3 find_interv), a window derived from a leg-width
+ *     RANGE [min_leg_width_m, max_leg_width_m]: at least
+ *     findInterv(range of its first beam) beams, the beams the thinnest leg
+ *     subtends at the FAR edge of its range band, floor(w_min / (r_band_max *
+ *     dtheta)); and, if max_leg_width_m > 0, at most maxBeams(range) =
+ *     ceil(w_max / (r_band_min * dtheta)) + 2 (the widest leg at the NEAR
+ *     edge of the band, plus one mixed pixel at each end). The thesis table
+ *     (1 deg scanner: 10 beams under 1.0 m, 8 to 1.2 m, 6 to 1.5 m, 4 to
+ *     2.2 m, 3 beyond) is the lower bound with a single width 0.18 m and no
+ *     upper bound (kThesisProfileIni). One width is wrong for real legs:
+ *     with 0.18 m a 12 cm leg never has enough beams beyond 1 m. The default
+ *     range 0.08-0.20 m is the thesis' own leg width window (figure 150,
+ *     rule 3), so the two rules agree. Derived that way the bands work for
+ *     any angular resolution (0.5, 0.35, 0.25 deg ...).
  *  3. Dip shape (figure 147, H.2 vote loop): the segment stands in front of
  *     its surroundings: the beam just outside an end is farther by at least
  *     edge_jump_m (H.2: 100 mm) or returns nothing; the thesis accepts one
@@ -62,6 +69,7 @@ enum class ELegReject
 {
 	accepted,
 	too_few_beams,
+	too_many_beams,
 	no_dip_edge,
 	width,
 	depth,
@@ -84,7 +92,8 @@ class CLegDetector
 		double max_range_m = 3.2;  //!< segments start only nearer than this (H.2: 3200 mm)
 		double max_segment_length_m = 0.30;  //!< H.2: 300 mm
 		double max_range_jump_m = 0.12;  //!< H.2: 120 mm between neighbouring beams
-		double leg_width_m = 0.18;  //!< width used by find_interv (reproduces the H.3 table at 1 deg)
+		double min_leg_width_m = 0.08;  //!< thinnest leg: least beams (0.18 alone reproduces the H.3 table at 1 deg)
+		double max_leg_width_m = 0.20;  //!< widest leg: most beams (0: no upper bound, thesis)
 		std::string find_interv_bands_m = "1.0 1.2 1.5 2.2";  //!< band limits of H.3; last band ends at max_range_m
 		int min_beams = 3;  //!< floor of find_interv (H.3: 3 beyond 2.2 m)
 		double edge_jump_m = 0.10;  //!< H.2 dip vote: 100 mm
@@ -99,7 +108,8 @@ class CLegDetector
 			v.real("max_range_m", max_range_m, 0.1, 80.0);
 			v.real("max_segment_length_m", max_segment_length_m, 0.01, 5.0);
 			v.real("max_range_jump_m", max_range_jump_m, 0.001, 5.0);
-			v.real("leg_width_m", leg_width_m, 0.01, 2.0);
+			v.real("min_leg_width_m", min_leg_width_m, 0.01, 2.0);
+			v.real("max_leg_width_m", max_leg_width_m, 0.0, 2.0);
 			v.text("find_interv_bands_m", find_interv_bands_m);
 			v.integer("min_beams", min_beams, 1, 1000);
 			v.real("edge_jump_m", edge_jump_m, 0.0, 10.0);
@@ -126,6 +136,9 @@ class CLegDetector
 	/** find_interv (H.3): least number of beams of a leg whose first beam is
 	 * at `range_m`, for a scanner with `angularStep_rad` between beams. */
 	int findInterv(double range_m, double angularStep_rad) const;
+	/** Most beams of a leg whose first beam is at `range_m` (upper end of the
+	 * window of rule 2); INT_MAX when max_leg_width_m is 0. */
+	int maxBeams(double range_m, double angularStep_rad) const;
 
 	const TOptions& options() const { return m_options; }
 
