@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <tuple>
 
 namespace hslam::dynamic
@@ -36,6 +37,14 @@ maps::CLaserGridInserter::TOptions seenInserterOptions(const CDynamicObjectFilte
 	l.insert_free_beyond_range = true;
 	return l;
 }
+
+CStaticEvidenceGrid::TOptions staticGridOptions(const CDynamicObjectFilter::TOptions& o)
+{
+	CStaticEvidenceGrid::TOptions g = o.static_grid;
+	// Only end points where legs are looked for (plus the search radius) matter.
+	g.max_range_m = o.detector.max_range_m + o.static_grid.radius_m + o.detector.max_segment_length_m;
+	return g;
+}
 }  // namespace
 
 CDynamicObjectFilter::CDynamicObjectFilter(const TOptions& options)
@@ -44,7 +53,8 @@ CDynamicObjectFilter::CDynamicObjectFilter(const TOptions& options)
 	  m_legs(options.tracker),
 	  m_persons(personTrackerOptions(options)),
 	  m_seen(seenGridOptions(options)),
-	  m_seenInserter(seenInserterOptions(options))
+	  m_seenInserter(seenInserterOptions(options)),
+	  m_static(staticGridOptions(options))
 {
 }
 
@@ -112,8 +122,12 @@ const TDynamicFrame& CDynamicObjectFilter::process(const mrpt::obs::CObservation
 	const mrpt::poses::CPose2D sensorPose = robotPose + mrpt::poses::CPose2D(scan.sensorPose);
 
 	for (const auto& l : legsWorld) m_frame.leg_in_free_space.push_back(seenFreeBefore(l, sensorPose));
+	constexpr double kNever = std::numeric_limits<double>::infinity();
+	for (const auto& l : legsWorld)
+		m_frame.leg_static_since_s.push_back(m_options.static_evidence ? m_static.staticSince(l, t_s) : kNever);
 	const bool useEvidence = m_options.tracker.confirm_free_hits > 0;
-	m_frame.leg_track = m_legs.update(legsWorld, sensorPose, t_s, useEvidence ? &m_frame.leg_in_free_space : nullptr);
+	m_frame.leg_track = m_legs.update(legsWorld, sensorPose, t_s, useEvidence ? &m_frame.leg_in_free_space : nullptr,
+									  &m_frame.leg_static_since_s);
 	std::vector<mrpt::math::TPoint2D> personsWorld;
 	std::vector<int> personOfLeg;
 	pairLegs(legsWorld, personsWorld, personOfLeg);
@@ -121,8 +135,11 @@ const TDynamicFrame& CDynamicObjectFilter::process(const mrpt::obs::CObservation
 	// person_needs_dynamic_leg, on a leg track confirmed dynamic itself (a
 	// pair of static legs changes its midpoint when the pairing changes).
 	std::vector<bool> personEvidence(personsWorld.size(), false);  // every person has a leg
+	std::vector<double> personStaticSince(personsWorld.size(), -kNever);  // all its legs on static structure
 	for (size_t i = 0; i < legsWorld.size(); ++i)
 	{
+		auto& since = personStaticSince[static_cast<size_t>(personOfLeg[i])];
+		since = std::max(since, m_frame.leg_static_since_s[i]);
 		const TTrack* leg = m_legs.find(m_frame.leg_track[i]);
 		const bool legDynamic = leg && leg->state == ETrackState::dynamic;
 		if ((!useEvidence || m_frame.leg_in_free_space[i]) && (!m_options.person_needs_dynamic_leg || legDynamic))
@@ -130,7 +147,7 @@ const TDynamicFrame& CDynamicObjectFilter::process(const mrpt::obs::CObservation
 	}
 	const bool usePersonEvidence = useEvidence || m_options.person_needs_dynamic_leg;
 	const std::vector<int> personIds =
-		m_persons.update(personsWorld, sensorPose, t_s, usePersonEvidence ? &personEvidence : nullptr);
+		m_persons.update(personsWorld, sensorPose, t_s, usePersonEvidence ? &personEvidence : nullptr, &personStaticSince);
 
 	m_frame.person_track.resize(m_frame.legs.size());
 	m_frame.leg_is_dynamic.resize(m_frame.legs.size());
@@ -147,6 +164,7 @@ const TDynamicFrame& CDynamicObjectFilter::process(const mrpt::obs::CObservation
 	buildMask(scan, robotPose);
 	if (m_options.retro_clear_max_points > 0) collectLateExclusions(scan, robotPose);
 	if (useEvidence) m_seenInserter.insert(m_seen, robotPose, scan, &m_frame.beam_is_dynamic);
+	if (m_options.static_evidence) m_static.insert(scan, robotPose, t_s, &m_frame.beam_is_dynamic);
 	return m_frame;
 }
 

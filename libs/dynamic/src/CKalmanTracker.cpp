@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <tuple>
 
 namespace hslam::dynamic
@@ -105,7 +106,7 @@ TTrack CKalmanTracker::newTrack(const mrpt::math::TPoint2D& z, const mrpt::poses
 	const double r2 = m_options.measurement_noise_m * m_options.measurement_noise_m;
 	const double v2 = 0.25 * m_options.max_speed_mps * m_options.max_speed_mps;
 	t.P = Eigen::Vector4d(r2, r2, v2, v2).asDiagonal();
-	t.t_last_s = t.t_seen_s = t_s;
+	t.t_last_s = t.t_seen_s = t.t_birth_s = t_s;
 	t.hits = 1;
 	t.birth_m = z;
 	t.sensor_birth_m = sensorPose.inverseComposePoint(z);
@@ -129,14 +130,23 @@ bool CKalmanTracker::meetsConfirmation(const TTrack& t) const
 	// Moved in the world (not static) AND relative to the sensor (not a part
 	// of the robot or something it carries, which moves with it).
 	const bool relative = !o.confirm_relative_motion || t.sensor_travel_m >= o.confirm_travel_m;
+	// Static-world evidence (CStaticEvidenceGrid): never on an observation
+	// lying on established static structure, nor while too many of the
+	// track's observations lay on structure that stood there before the
+	// track was born (a track hopping between chair legs, or jumping off them
+	// when the pose slips). Structure established later may be the track's
+	// own object standing still (a person waiting), which may walk off.
+	if (t.on_static || t.static_hits > o.confirm_max_static_fraction * t.hits) return false;
 	return t.travel_m >= o.confirm_travel_m && relative && t.hits >= o.confirm_hits &&
 		   t.free_hits >= o.confirm_free_hits && t.moving_frames >= o.confirm_moving_frames;
 }
 
 void CKalmanTracker::registerHit(TTrack& t, const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose,
-								 bool evidence) const
+								 bool evidence, double staticSince_s) const
 {
 	++t.hits;
+	t.on_static = std::isfinite(staticSince_s);
+	t.static_hits += staticSince_s <= t.t_birth_s;
 	t.misses = 0;
 	t.free_hits += evidence;
 	t.travel_m = std::max(t.travel_m, std::hypot(z.x - t.birth_m.x, z.y - t.birth_m.y));
@@ -189,8 +199,10 @@ void CKalmanTracker::takeOverFromMemory(double t_s, std::vector<int>& owner)
 
 std::vector<int> CKalmanTracker::update(const std::vector<mrpt::math::TPoint2D>& observations,
 										const mrpt::poses::CPose2D& sensorPose, double t_s,
-										const std::vector<bool>* motionEvidence)
+										const std::vector<bool>* motionEvidence, const std::vector<double>* staticSince_s)
 {
+	const auto since = [&](size_t oi)
+	{ return staticSince_s ? (*staticSince_s)[oi] : std::numeric_limits<double>::infinity(); };
 	// Without evidence from the caller the requirement is waived (thesis rule).
 	const auto evidence = [&](size_t oi) { return !motionEvidence || (*motionEvidence)[oi]; };
 	for (auto& t : m_tracks) predict(t, t_s);
@@ -216,7 +228,7 @@ std::vector<int> CKalmanTracker::update(const std::vector<mrpt::math::TPoint2D>&
 		t.observation = static_cast<int>(oi);
 		t.t_seen_s = t_s;
 		correct(t, observations[oi]);
-		registerHit(t, observations[oi], sensorPose, evidence(oi));
+		registerHit(t, observations[oi], sensorPose, evidence(oi), since(oi));
 	}
 
 	// Missed tracks: null counter; dropped after max_misses (dynamic ones are remembered).
@@ -259,6 +271,8 @@ std::vector<int> CKalmanTracker::update(const std::vector<mrpt::math::TPoint2D>&
 		}
 		TTrack t = newTrack(z, sensorPose, t_s);
 		t.free_hits = evidence(oi);
+		t.on_static = std::isfinite(since(oi));
+		t.static_hits = since(oi) <= t_s;
 		if (best != m_memory.end())
 		{
 			--m_nextId;  // the remembered id is reused
@@ -272,6 +286,8 @@ std::vector<int> CKalmanTracker::update(const std::vector<mrpt::math::TPoint2D>&
 			t.travel_m = best->track.travel_m;
 			t.hits = best->track.hits + 1;
 			t.free_hits = best->track.free_hits + evidence(oi);
+			t.t_birth_s = best->track.t_birth_s;  // the same object: its static-world record too
+			t.static_hits = best->track.static_hits + (since(oi) <= t.t_birth_s);
 			if ((!motionEvidence || evidence(oi)) && meetsConfirmation(t)) t.state = ETrackState::dynamic;
 			m_memory.erase(best);
 			++m_reidentified;

@@ -20,6 +20,17 @@
  *    confirm_free_hits such observations to confirm a track, so a track
  *    hopping between static clutter (chair legs seen from a moving robot)
  *    is not confirmed although it "moves".
+ *  - Static-world evidence (beyond the thesis, CStaticEvidenceGrid): a
+ *    short-memory 5 cm world grid counts in how many scans, over how long,
+ *    each cell was hit. A leg within static_radius_m of a cell hit in
+ *    static_min_scans scans over static_min_span_s without gaps longer than
+ *    static_max_gap_s (longer than a walking foot is planted) lies on static
+ *    structure; no leg or person track is confirmed dynamic on such an
+ *    observation, nor ever after one on structure established before the
+ *    track was born (confirm_max_static_fraction = 0; a person observation
+ *    is on structure when all its legs are): a track hopping between chair
+ *    legs, or jumping by a pose error, still sits on furniture seen for
+ *    seconds.
  *  - A detection is dynamic if its leg track or its person track is dynamic.
  *    With person_needs_dynamic_leg (beyond the thesis) a person track needs,
  *    as its motion evidence, an observation whose leg is on a leg track
@@ -45,6 +56,7 @@
 
 #include <hslam/dynamic/CKalmanTracker.h>
 #include <hslam/dynamic/CLegDetector.h>
+#include <hslam/dynamic/CStaticEvidenceGrid.h>
 #include <hslam/maps/CLaserGridInserter.h>
 #include <hslam/maps/CTiledOccupancyGrid.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
@@ -65,6 +77,7 @@ struct TDynamicFrame
 	std::vector<int> person_track;  //!< per leg: id of its person track
 	std::vector<bool> leg_is_dynamic;  //!< per leg
 	std::vector<bool> leg_in_free_space;  //!< per leg: motion evidence (see file comment)
+	std::vector<double> leg_static_since_s;  //!< per leg: on static structure established since (+inf: not; see file comment)
 	std::vector<bool> beam_is_dynamic;  //!< per beam: hits a confirmed dynamic object
 	/** World end points of earlier beams that hit a track confirmed now (see file comment). */
 	std::vector<mrpt::math::TPoint2D> retro_clear_world;
@@ -90,6 +103,8 @@ class CDynamicObjectFilter
 		double free_space_behind_m = 0.08;  //!< where the inside of a leg is checked
 		double free_space_threshold = 0.4;  //!< occupancy below this = seen free
 		int retro_clear_max_points = 300;  //!< end points kept per unconfirmed person track (0: off)
+		bool static_evidence = true;  //!< veto confirmation on established static structure
+		CStaticEvidenceGrid::TOptions static_grid;  //!< its grid (static_* keys)
 
 		template <class V>
 		void visit(V& v)
@@ -107,6 +122,13 @@ class CDynamicObjectFilter
 			v.real("free_space_behind_m", free_space_behind_m, 0.0, 1.0);
 			v.real("free_space_threshold", free_space_threshold, 0.01, 0.5);
 			v.integer("retro_clear_max_points", retro_clear_max_points, 0, 100000);
+			v.flag("static_evidence", static_evidence);
+			v.real("static_resolution_m", static_grid.resolution_m, 0.01, 1.0);
+			v.real("static_radius_m", static_grid.radius_m, 0.0, 1.0);
+			v.integer("static_min_scans", static_grid.min_scans, 1, 100000);
+			v.real("static_min_span_s", static_grid.min_span_s, 0.0, 3600.0);
+			v.real("static_max_gap_s", static_grid.max_gap_s, 0.0, 3600.0);
+			v.real("static_memory_s", static_grid.memory_s, 0.1, 3600.0);
 		}
 	};
 
@@ -139,6 +161,7 @@ class CDynamicObjectFilter
 	CKalmanTracker m_legs, m_persons;
 	maps::CTiledOccupancyGrid m_seen;  //!< what the sensor has seen (motion evidence)
 	maps::CLaserGridInserter m_seenInserter;
+	CStaticEvidenceGrid m_static;  //!< static-world evidence (see file comment)
 	std::map<int, std::vector<mrpt::math::TPoint2D>> m_pendingHits;  //!< person track id -> beam end points (world)
 	TDynamicFrame m_frame;
 };

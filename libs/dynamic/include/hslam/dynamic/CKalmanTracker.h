@@ -40,6 +40,14 @@
  *    becomes static (a ghost: never reported as dynamic, it may still turn
  *    dynamic if it starts moving); max_misses consecutive missed frames drop
  *    a track (thesis: 3).
+ *  - Static-world evidence (beyond the thesis; the caller passes, per
+ *    observation, since when it lies on established static structure, see
+ *    CStaticEvidenceGrid): no track is confirmed on an observation on such
+ *    structure, and none with more than confirm_max_static_fraction (0) of
+ *    its observations on structure established before the track was born:
+ *    static clutter whose track hops between neighbouring chair legs or
+ *    jumps when the pose slips. (Structure established after the birth may
+ *    be the track's own object standing still, which may walk off.)
  *  - Memory (beyond the thesis): a dropped dynamic track is remembered for
  *    memory_s; a new observation within memory_gate_m of where it was
  *    lost (or of its constant-velocity extrapolation) takes over its id and
@@ -85,6 +93,9 @@ struct TTrack
 	mrpt::math::TPoint2D sensor_birth_m;  //!< first observed position in the sensor frame of that scan
 	double sensor_travel_m = 0;  //!< largest distance of an observation from sensor_birth_m, in the sensor frame
 	int moving_frames = 0;  //!< consecutive hits with a significant speed (see confirm_speed_sigma)
+	double t_birth_s = 0;  //!< time of the first observation
+	bool on_static = false;  //!< last observation lies on established static structure (see update())
+	int static_hits = 0;  //!< observations on static structure established before the track was born
 	int observation = -1;  //!< index of the observation associated in the last update, -1 if missed
 	/** Polar state in the sensor frame of the last update (thesis H.1 obj[]). */
 	double range_m = 0, bearing_rad = 0, v_radial_mps = 0, v_angular_radps = 0;
@@ -116,6 +127,7 @@ class CKalmanTracker
 		double confirm_speed_mps = 0.2;  //!< "significant speed": at least this fast ...
 		double confirm_speed_sigma = 1.0;  //!< ... and this many standard deviations (Kalman covariance) above zero
 		bool confirm_relative_motion = true;  //!< also require confirm_travel_m in the sensor frame (not attached to the robot; thesis: no)
+		double confirm_max_static_fraction = 0.0;  //!< at most this share of hits on structure older than the track (0: none; 1: off)
 
 		template <class V>
 		void visit(V& v)
@@ -138,6 +150,7 @@ class CKalmanTracker
 			v.real("confirm_speed_mps", confirm_speed_mps, 0.0, 100.0);
 			v.real("confirm_speed_sigma", confirm_speed_sigma, 0.0, 100.0);
 			v.flag("confirm_relative_motion", confirm_relative_motion);
+			v.real("confirm_max_static_fraction", confirm_max_static_fraction, 0.0, 1.0);
 		}
 	};
 
@@ -149,10 +162,16 @@ class CKalmanTracker
 	 * of the track it now belongs to (new tracks are created for the rest).
 	 * `motionEvidence` (optional, one flag per observation) marks observations
 	 * lying where the sensor saw free space before; confirm_free_hits of them
-	 * are needed before a track can be confirmed dynamic. */
+	 * are needed before a track can be confirmed dynamic. `staticSince_s`
+	 * (optional, one per observation) is the time since which the
+	 * observation lies on established static structure (CStaticEvidenceGrid,
+	 * +infinity: not on it): a track is never confirmed on such an
+	 * observation, nor while more than confirm_max_static_fraction of its
+	 * observations lay on structure established before the track was born. */
 	std::vector<int> update(const std::vector<mrpt::math::TPoint2D>& observations,
 							const mrpt::poses::CPose2D& sensorPose, double t_s,
-							const std::vector<bool>* motionEvidence = nullptr);
+							const std::vector<bool>* motionEvidence = nullptr,
+							const std::vector<double>* staticSince_s = nullptr);
 
 	/** Live tracks (tentative, dynamic and ghost), after the last update. */
 	const std::vector<TTrack>& tracks() const { return m_tracks; }
@@ -177,8 +196,8 @@ class CKalmanTracker
 				double t_s) const;
 	void updatePolar(TTrack& t, const mrpt::poses::CPose2D& sensorPose) const;
 	TTrack newTrack(const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose, double t_s);
-	void registerHit(TTrack& t, const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose,
-					 bool evidence) const;
+	void registerHit(TTrack& t, const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose, bool evidence,
+					 double staticSince_s) const;
 	bool significantSpeed(const TTrack& t) const;
 	bool meetsConfirmation(const TTrack& t) const;
 	void takeOverFromMemory(double t_s, std::vector<int>& owner);

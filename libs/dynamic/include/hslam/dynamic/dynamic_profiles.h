@@ -10,7 +10,7 @@ namespace hslam::dynamic
  * an upper beam count; a track is dynamic once it has moved 0.2 m from its
  * birth, without motion evidence, relative-motion test or speed
  * significance; a person track is confirmed by its own motion; the person
- * disc is a fixed 0.35 m. */
+ * disc is a fixed 0.35 m; no static-world evidence. */
 inline const char* kThesisProfileIni = R"([dynamic_objects]
 min_leg_width_m = 0.18
 max_leg_width_m = 0
@@ -20,6 +20,7 @@ confirm_moving_frames = 0
 mask_radius_m = 0.35
 mask_sigma = 0
 person_needs_dynamic_leg = false
+static_evidence = false
 )";
 
 /** Hokuyo at 0.35 deg with people up to 5 m (../shared/datasets/legs):
