@@ -1,7 +1,11 @@
 #include "bench_common.h"
 
+#include <hslam/maps/grid_rendering.h>
 #include <hslam/slam/CMappingPipeline.h>
 #include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/img/CImage.h>
+
+#include <stdexcept>
 
 namespace hslam::bench
 {
@@ -56,6 +60,21 @@ void insertMrpt(mrpt::maps::COccupancyGridMap2D& grid, const std::vector<TPosedS
 size_t mrptGridBytes(const mrpt::maps::COccupancyGridMap2D& grid)
 {
 	return static_cast<size_t>(grid.getSizeX()) * grid.getSizeY() * sizeof(mrpt::maps::COccupancyGridMap2D::cellType);
+}
+
+void saveExclusionComparison(const maps::CTiledOccupancyGrid& without, const maps::CTiledOccupancyGrid& with,
+							 int pixelsPerCell, const std::string& pngPath)
+{
+	const auto frame = maps::frameForObservedArea(without, 5, pixelsPerCell);
+	const auto a = maps::renderGrid(without, frame), b = maps::renderGrid(with, frame);
+	mrpt::img::CImage both(a.getWidth() * 2 + 10, a.getHeight(), mrpt::img::CH_RGB);
+	both.filledRectangle(0, 0, static_cast<int>(both.getWidth()) - 1, static_cast<int>(both.getHeight()) - 1,
+						 mrpt::img::TColor(255, 255, 255));
+	both.drawImage(0, 0, a);
+	both.drawImage(static_cast<int>(a.getWidth()) + 10, 0, b);
+	both.textOut(5, 5, "without exclusion", mrpt::img::TColor(200, 0, 0));
+	both.textOut(static_cast<int>(a.getWidth()) + 15, 5, "with exclusion", mrpt::img::TColor(0, 130, 0));
+	if (!both.saveToFile(pngPath)) throw std::runtime_error(pngPath + ": cannot write");
 }
 
 }  // namespace hslam::bench

@@ -89,4 +89,9 @@ int runLegsSimSuite(const std::string& dataDir, const std::string& outDir, const
 /** ARCOS parser, driver and recorders against the emulators (bench_hwdrivers.cpp). */
 int runHwdriversSuite(int repetitions);
 
+/** Writes the two maps side by side in one frame (left "without exclusion",
+ * right "with exclusion") to pngPath; throws naming the file if it cannot. */
+void saveExclusionComparison(const maps::CTiledOccupancyGrid& without, const maps::CTiledOccupancyGrid& with,
+							 int pixelsPerCell, const std::string& pngPath);
+
 }  // namespace hslam::bench

@@ -329,17 +329,7 @@ TTrailResult trailOnStaticLog(const dynamic::CDynamicObjectFilter::TOptions& opt
 	r.trail_without = dynamic::cellsNotIn(without, reference, 1).size();
 	r.trail_with = dynamic::cellsNotIn(with, reference, 1).size();
 
-	// The two maps side by side (same frame): without | with exclusion.
-	auto frame = maps::frameForObservedArea(without, 5, 3);
-	const auto a = maps::renderGrid(without, frame), b = maps::renderGrid(with, frame);
-	mrpt::img::CImage both(a.getWidth() * 2 + 10, a.getHeight(), mrpt::img::CH_RGB);
-	both.filledRectangle(0, 0, static_cast<int>(both.getWidth()) - 1, static_cast<int>(both.getHeight()) - 1,
-						 mrpt::img::TColor(255, 255, 255));
-	both.drawImage(0, 0, a);
-	both.drawImage(static_cast<int>(a.getWidth()) + 10, 0, b);
-	both.textOut(5, 5, "without exclusion", mrpt::img::TColor(200, 0, 0));
-	both.textOut(static_cast<int>(a.getWidth()) + 15, 5, "with exclusion", mrpt::img::TColor(0, 130, 0));
-	if (!both.saveToFile(pngPath)) throw std::runtime_error(pngPath + ": cannot write");
+	saveExclusionComparison(without, with, 3, pngPath);
 	return r;
 }
 

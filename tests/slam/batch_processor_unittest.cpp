@@ -1,3 +1,5 @@
+#include "batch_test_utils.h"
+
 #include <gtest/gtest.h>
 #include <hslam/common/options_io.h>
 #include <hslam/common/tum_trajectory.h>
@@ -23,21 +25,9 @@ namespace
 {
 const std::string kSample =
 	std::string(HSLAM_MRPT_DATASETS_DIR) + "/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog";
-const std::string kDefaultIni = std::string(HSLAM_SOURCE_DIR) + "/config_ini/hslam-default.ini";
+using hslam::slam::testing::kDefaultIni;
 
-slam::TBatchResult runBatch(const std::string& input, const std::string& outdir,
-							const std::vector<std::string>& overrides = {})
-{
-	slam::TBatchRequest request;
-	request.config_file = kDefaultIni;
-	request.overrides = overrides;
-	request.input_rawlog = input;
-	request.output_dir = outdir;
-	request.show_progress = false;
-	std::ostringstream out, err;
-	slam::CBatchProcessor processor(request, out, err);
-	return processor.run();
-}
+using hslam::slam::testing::runBatch;
 
 /** Decompressed bytes of a (gz) rawlog. */
 std::string rawlogBytes(const std::string& path)

@@ -2,6 +2,8 @@
  * grid updates from CObservationRange, TBF corners against the ground truth
  * of the simulated lab sample, the pose the readings are inserted at, and
  * that `[sonar_model] enabled = false` leaves the laser map untouched. */
+#include "batch_test_utils.h"
+
 #include <gtest/gtest.h>
 #include <hslam/common/options_io.h>
 #include <hslam/common/tum_trajectory.h>
@@ -29,20 +31,9 @@ using namespace hslam;
 namespace
 {
 const std::string kLab = std::string(HSLAM_SOURCE_DIR) + "/rawlog_samples/lab";
-const std::string kDefaultIni = std::string(HSLAM_SOURCE_DIR) + "/config_ini/hslam-default.ini";
+using hslam::slam::testing::kDefaultIni;
 
-slam::TBatchResult runBatch(const std::string& input, const std::string& outdir,
-							const std::vector<std::string>& overrides = {})
-{
-	slam::TBatchRequest request;
-	request.config_file = kDefaultIni;
-	request.overrides = overrides;
-	request.input_rawlog = input;
-	request.output_dir = outdir;
-	request.show_progress = false;
-	std::ostringstream out, err;
-	return slam::CBatchProcessor(request, out, err).run();
-}
+using hslam::slam::testing::runBatch;
 
 mrpt::maps::COccupancyGridMap2D loadGridmap(const std::string& path)
 {

@@ -9,14 +9,6 @@ namespace hslam::slam
 {
 namespace
 {
-template <class TOptionsType>
-TOptionsType loaded(const mrpt::config::CConfigFileBase& cfg, const std::string& section)
-{
-	TOptionsType options;
-	common::loadOptions(options, cfg, section);
-	return options;
-}
-
 common::TTimedPose2D timedPose(const mrpt::obs::CObservation& obs, const mrpt::poses::CPose2D& pose)
 {
 	return {mrpt::Clock::toDouble(obs.timestamp), {pose.x(), pose.y(), pose.phi()}};
@@ -32,12 +24,12 @@ std::vector<std::string> CMappingPipeline::sections()
 }
 
 CMappingPipeline::CMappingPipeline(const mrpt::config::CConfigFileBase& cfg)
-	: m_processOptions(loaded<TProcessOptions>(cfg, "process")),
-	  m_poseOptions(loaded<TPoseEstimationOptions>(cfg, "pose_estimation")),
-	  m_grid(loaded<maps::CTiledOccupancyGrid::TOptions>(cfg, "grid")),
-	  m_laserInserter(loaded<maps::CLaserGridInserter::TOptions>(cfg, "laser_model")),
-	  m_sonar(loaded<TSonarMappingOptions>(cfg, "sonar_model"), loaded<TTbfStageOptions>(cfg, "tbf")),
-	  m_dynamicOptions(loaded<dynamic::CDynamicObjectFilter::TOptions>(cfg, "dynamic_objects")),
+	: m_processOptions(common::loadedOptions<TProcessOptions>(cfg, "process")),
+	  m_poseOptions(common::loadedOptions<TPoseEstimationOptions>(cfg, "pose_estimation")),
+	  m_grid(common::loadedOptions<maps::CTiledOccupancyGrid::TOptions>(cfg, "grid")),
+	  m_laserInserter(common::loadedOptions<maps::CLaserGridInserter::TOptions>(cfg, "laser_model")),
+	  m_sonar(common::loadedOptions<TSonarMappingOptions>(cfg, "sonar_model"), common::loadedOptions<TTbfStageOptions>(cfg, "tbf")),
+	  m_dynamicOptions(common::loadedOptions<dynamic::CDynamicObjectFilter::TOptions>(cfg, "dynamic_objects")),
 	  m_estimator(createPoseEstimator(m_poseOptions, cfg, m_timer))
 {
 	if (m_dynamicOptions.enabled)

@@ -10,14 +10,6 @@ namespace hslam::slam
 {
 namespace
 {
-template <class T>
-T loaded(const mrpt::config::CConfigFileBase& cfg, const std::string& section)
-{
-	T options;
-	common::loadOptions(options, cfg, section);
-	return options;
-}
-
 fusion::TPoseVec toVec(const mrpt::poses::CPose2D& p) { return {p.x(), p.y(), p.phi()}; }
 mrpt::poses::CPose2D toPose(const fusion::TPoseVec& v) { return {v[0], v[1], v[2]}; }
 }  // namespace
@@ -33,14 +25,14 @@ CScanMatchingPoseEstimator::CScanMatchingPoseEstimator(const TPoseEstimationOpti
 													   const mrpt::config::CConfigFileBase& cfg,
 													   common::CStageTimer& timer)
 	: m_options(options),
-	  m_ukfOptions(loaded<TUkfSectionOptions>(cfg, "ukf")),
-	  m_odometryNoise(loaded<fusion::TOdometryNoiseOptions>(cfg, "odometry_noise")),
-	  m_extraction(loaded<TLineExtractionChoice>(cfg, "line_extraction")),
+	  m_ukfOptions(common::loadedOptions<TUkfSectionOptions>(cfg, "ukf")),
+	  m_odometryNoise(common::loadedOptions<fusion::TOdometryNoiseOptions>(cfg, "odometry_noise")),
+	  m_extraction(common::loadedOptions<TLineExtractionChoice>(cfg, "line_extraction")),
 	  m_extractor(features::createLineExtractor(m_extraction.method, cfg,
 												features::lineExtractorSection(m_extraction.method))),
-	  m_lineMatcher(loaded<matching::CLineScanMatcher::TOptions>(cfg, "line_matching")),
-	  m_icp(loaded<matching::CIcpMatcher::TOptions>(cfg, "icp")),
-	  m_keyframes(loaded<matching::CKeyframePointMap::TOptions>(cfg, "icp_map")),
+	  m_lineMatcher(common::loadedOptions<matching::CLineScanMatcher::TOptions>(cfg, "line_matching")),
+	  m_icp(common::loadedOptions<matching::CIcpMatcher::TOptions>(cfg, "icp")),
+	  m_keyframes(common::loadedOptions<matching::CKeyframePointMap::TOptions>(cfg, "icp_map")),
 	  m_ukf(m_ukfOptions.filter),
 	  m_lineNoise(m_ukfOptions.adaptation),
 	  m_icpNoise(m_ukfOptions.adaptation),

@@ -88,6 +88,16 @@ void loadOptions(TOptionsType& options, const mrpt::config::CConfigFileBase& cfg
 }
 
 /** Writes every field of `options` into `section`. */
+/** A default-constructed option struct loaded from `section` (for member
+ * initialiser lists). */
+template <class TOptionsType>
+TOptionsType loadedOptions(const mrpt::config::CConfigFileBase& cfg, const std::string& section)
+{
+	TOptionsType options;
+	loadOptions(options, cfg, section);
+	return options;
+}
+
 template <class TOptionsType>
 void saveOptions(const TOptionsType& options, mrpt::config::CConfigFileBase& cfg, const std::string& section)
 {

@@ -1,0 +1,29 @@
+// Shared by the tests/slam programs: run the batch job as hslam-process does.
+#pragma once
+
+#include <hslam/slam/CBatchProcessor.h>
+#include <hslam/testing/test_paths.h>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace hslam::slam::testing
+{
+inline const std::string kDefaultIni = std::string(HSLAM_SOURCE_DIR) + "/config_ini/hslam-default.ini";
+
+/** The batch job on `input` with the default INI plus `overrides`
+ * ("SECTION.KEY=VALUE"), output into `outdir`, console output discarded. */
+inline TBatchResult runBatch(const std::string& input, const std::string& outdir,
+							 const std::vector<std::string>& overrides = {})
+{
+	TBatchRequest request;
+	request.config_file = kDefaultIni;
+	request.overrides = overrides;
+	request.input_rawlog = input;
+	request.output_dir = outdir;
+	request.show_progress = false;
+	std::ostringstream out, err;
+	return CBatchProcessor(request, out, err).run();
+}
+}  // namespace hslam::slam::testing
