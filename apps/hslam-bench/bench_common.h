@@ -74,9 +74,6 @@ int runLinesSuite(const std::vector<std::string>& logs, int repetitions);
  * ../shared/datasets/legs (bench_legs.cpp); images go to outDir. */
 int runLegsSuite(const std::string& dataDir, const std::string& outDir, const std::string& configFile);
 
-/** Filter options: the INI text `profileIni`, then the [dynamic_objects]
- * section of `configFile` (if not empty) on top, both range-checked. */
-dynamic::CDynamicObjectFilter::TOptions loadDynamicOptions(const std::string& profileIni, const std::string& configFile);
 
 /** Every 2D scan of a rawlog (either format), in file order. */
 std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> readScans(const std::string& rawlogPath);

@@ -7,13 +7,21 @@
  *                                 outside the arc are not scored
  *   demo_stationary_simple_environment.rawlog   static scanner, people walk:
  *                                 occupied-cell trail with / without exclusion
- * Prints tables, then legs_recall=, legs_false_per_scan=,
- * ghost_cells_reduction= and timing keys. */
+ * Two methods: the thesis rules (Hokuyo profile) and the learned classifier
+ * (CLegClassifier), the latter scored by cross-validation: each recording
+ * is scored with a forest trained on the other folds only (leg_training.h).
+ * Three output levels each: every detected leg; legs flagged dynamic when
+ * seen (causal); legs whose track is confirmed dynamic at any time (late:
+ * what the batch map excludes). Prints tables, then legs_recall=,
+ * legs_false_per_scan= (learned, late), ghost_cells_reduction= (learned)
+ * and the other levels' and timing keys. */
 #include "bench_common.h"
 
 #include <hslam/common/options_io.h>
 #include <hslam/dynamic/CDynamicObjectFilter.h>
 #include <hslam/dynamic/dynamic_profiles.h>
+#include <hslam/dynamic/leg_dataset.h>
+#include <hslam/dynamic/leg_training.h>
 #include <hslam/dynamic/occupied_cells.h>
 #include <hslam/io/CRawlogReader.h>
 #include <hslam/matching/CKeyframePointMap.h>
@@ -30,6 +38,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -40,17 +49,7 @@ namespace hslam::bench
 {
 std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> readScans(const std::string& path)
 {
-	io::CRawlogReader reader(path);
-	io::TRawlogEntry entry;
-	std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> scans;
-	while (reader.next(entry))
-	{
-		if (auto s = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(entry.observation)) scans.push_back(s);
-		if (entry.frame)
-			for (const auto& o : *entry.frame)
-				if (auto s2 = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(o)) scans.push_back(s2);
-	}
-	return scans;
+	return dynamic::readRangeScans(path);
 }
 
 namespace
@@ -58,74 +57,13 @@ namespace
 using mrpt::obs::CObservation2DRangeScan;
 namespace fs = std::filesystem;
 
-
 struct TScored
 {
 	size_t scans = 0, annotated = 0, matched = 0, arc_unmatched = 0, outside_arc = 0;
 	size_t annotated_in_range = 0, matched_in_range = 0;
 };
 
-/** One CSV line split at commas outside double quotes. */
-std::vector<std::string> splitCsv(const std::string& line)
-{
-	std::vector<std::string> out(1);
-	bool quoted = false;
-	for (char c : line)
-	{
-		if (c == '"')
-			quoted = !quoted;
-		else if (c == ',' && !quoted)
-			out.emplace_back();
-		else if (c != '\r')
-			out.back() += c;
-	}
-	return out;
-}
-
-/** Annotated leg centroids (laser frame) per row of a .scans.csv. */
-std::vector<std::vector<mrpt::math::TPoint2D>> readAnnotations(const std::string& path)
-{
-	std::ifstream in(path);
-	if (!in) throw std::runtime_error(path + ": cannot open");
-	std::string line;
-	std::getline(in, line);
-	const auto header = splitCsv(line);
-	const auto col = std::find(header.begin(), header.end(), "annotated_xy");
-	if (col == header.end()) throw std::runtime_error(path + ": line 1: no 'annotated_xy' column");
-	const size_t k = static_cast<size_t>(col - header.begin());
-	std::vector<std::vector<mrpt::math::TPoint2D>> rows;
-	for (size_t lineNo = 2; std::getline(in, line); ++lineNo)
-	{
-		const auto fields = splitCsv(line);
-		if (fields.size() != header.size())
-			throw std::runtime_error(path + ": line " + std::to_string(lineNo) + ": " +
-									 std::to_string(fields.size()) + " fields, header has " +
-									 std::to_string(header.size()));
-		std::vector<mrpt::math::TPoint2D> legs;
-		std::istringstream pairs(fields[k]);
-		std::string xy;
-		while (std::getline(pairs, xy, ';'))
-		{
-			mrpt::math::TPoint2D p;
-			char comma = 0;
-			std::istringstream one(xy);
-			if (!(one >> p.x >> comma >> p.y) || comma != ',')
-				throw std::runtime_error(path + ": line " + std::to_string(lineNo) + ": annotated_xy '" + xy +
-										 "' is not 'x,y'");
-			legs.push_back(p);
-		}
-		rows.push_back(legs);
-	}
-	return rows;
-}
-
-bool inArc(double x, double y)
-{
-	// leg_tracker's extract_positive_training_clusters arc: bearing strictly
-	// within (-15, 15) deg, distance < 5 m (README of the dataset).
-	const double b = std::atan2(y, x) * 180 / M_PI;
-	return b > -15 && b < 15 && std::hypot(x, y) < 5.0;
-}
+using TClassifierPtr = std::shared_ptr<const dynamic::CLegClassifier>;
 
 /** Legs reported for one scan (robot = laser frame here). */
 using TLegsPerScan = std::vector<std::vector<dynamic::TLegSegment>>;
@@ -161,7 +99,7 @@ TScored scoreAgainstAnnotations(const TLegsPerScan& reported,
 			s.matched_in_range += inRange;
 		}
 		for (size_t j = 0; j < legs.size(); ++j)
-			if (!used[j]) (inArc(legs[j].x_m, legs[j].y_m) ? s.arc_unmatched : s.outside_arc)++;
+			if (!used[j]) (dynamic::inAnnotatedArc({legs[j].x_m, legs[j].y_m}) ? s.arc_unmatched : s.outside_arc)++;
 	}
 	return s;
 }
@@ -193,11 +131,11 @@ void countMissReasons(const dynamic::CLegDetector& detector, const std::vector<C
  * beam_is_dynamic and tracks.csv use) and those whose leg or person track
  * is confirmed dynamic at that scan or later (what the late exclusion
  * removes from the map); adds the time spent to *time_s. */
-void runFilter(const dynamic::CDynamicObjectFilter::TOptions& options,
+void runFilter(const dynamic::CDynamicObjectFilter::TOptions& options, const TClassifierPtr& classifier,
 			   const std::vector<CObservation2DRangeScan::Ptr>& scans, const std::vector<mrpt::poses::CPose2D>& poses,
 			   TLegsPerScan& all, TLegsPerScan& dynamicOnly, TLegsPerScan& lateDynamic, double* time_s)
 {
-	dynamic::CDynamicObjectFilter filter(options);
+	dynamic::CDynamicObjectFilter filter(options, classifier);
 	all.assign(scans.size(), {});
 	dynamicOnly.assign(scans.size(), {});
 	lateDynamic.assign(scans.size(), {});
@@ -297,8 +235,8 @@ CObservation2DRangeScan medianScan(const std::vector<CObservation2DRangeScan::Pt
 	return median;
 }
 
-TTrailResult trailOnStaticLog(const dynamic::CDynamicObjectFilter::TOptions& options, const std::string& rawlog,
-							  const std::string& pngPath)
+TTrailResult trailOnStaticLog(const dynamic::CDynamicObjectFilter::TOptions& options, const TClassifierPtr& classifier,
+							  const std::string& rawlog, const std::string& pngPath)
 {
 	const auto scans = readScans(rawlog);
 	if (scans.empty()) throw std::runtime_error(rawlog + ": no 2D scans");
@@ -307,7 +245,7 @@ TTrailResult trailOnStaticLog(const dynamic::CDynamicObjectFilter::TOptions& opt
 	maps::CLaserGridInserter inserter(laser);
 	maps::CTiledOccupancyGrid without, with, reference;
 	const mrpt::poses::CPose2D origin;
-	dynamic::CDynamicObjectFilter filter(options);
+	dynamic::CDynamicObjectFilter filter(options, classifier);
 	TTrailResult r;
 	for (const auto& s : scans)
 	{
@@ -339,154 +277,193 @@ namespace
 {
 double ratio(size_t a, size_t b) { return static_cast<double>(a) / static_cast<double>(std::max<size_t>(1, b)); }
 
-void addTo(TScored& total, const TScored& s)
+/** Scores of one output level over the whole folder. */
+struct TLevel
 {
-	total.scans += s.scans;
-	total.annotated += s.annotated;
-	total.matched += s.matched;
-	total.arc_unmatched += s.arc_unmatched;
-	total.annotated_in_range += s.annotated_in_range;
-	total.matched_in_range += s.matched_in_range;
+	size_t annotated = 0, matched = 0, false_legs = 0, negative_scans = 0, arc_unmatched = 0;
+	double recall() const { return ratio(matched, annotated); }
+	double falsePerScan() const { return ratio(false_legs, negative_scans); }
+};
+
+/** The three output levels of the filter: every detected leg, legs flagged
+ * dynamic when seen (causal), legs whose track is confirmed at any time
+ * (what late exclusion removes from the map). */
+struct TMethodResult
+{
+	TLevel detected, dynamic, late;
+	double filter_s = 0;
+	size_t filter_scans = 0;
+	std::map<std::string, size_t> miss_reasons;
+};
+
+void addPositive(TLevel& level, const TScored& s)
+{
+	level.annotated += s.annotated;
+	level.matched += s.matched;
+	level.arc_unmatched += s.arc_unmatched;
 }
 
-std::vector<fs::path> positiveFiles(const std::string& dataDir)
+void addNegative(TLevel& level, const TLegsPerScan& reported)
 {
-	std::vector<fs::path> positives;
-	for (const auto& e : fs::directory_iterator(dataDir))
+	level.negative_scans += reported.size();
+	for (const auto& legs : reported) level.false_legs += legs.size();
+}
+
+/** Runs the filter over every part; `classifierOf(part index)` gives the
+ * classifier to use (null: the rules); negative parts use the ICP poses of
+ * `negativePoses` (by part index), positive parts a static scanner. */
+TMethodResult evaluateMethod(const std::string& title, const dynamic::CDynamicObjectFilter::TOptions& options,
+							 const std::vector<dynamic::TLegDataPart>& parts,
+							 const std::function<TClassifierPtr(size_t)>& classifierOf,
+							 const std::map<size_t, std::vector<mrpt::poses::CPose2D>>& negativePoses)
+{
+	constexpr double kMatchRadius_m = 0.20;
+	TMethodResult r;
+	std::cout << "\n" << title << "\n"
+			  << "  part                     scans  annotated   detected (recall)   dynamic (recall)   late (recall)\n"
+			  << "                                  / false legs per scan on parts without people\n";
+	for (size_t i = 0; i < parts.size(); ++i)
 	{
-		const std::string name = e.path().filename().string();
-		if (name.rfind("positive_", 0) == 0 && e.path().extension() == ".rawlog" &&
-			name.find("_extracted") != std::string::npos)
-			positives.push_back(e.path());
+		const auto& part = parts[i];
+		const auto classifier = classifierOf(i);
+		const auto poses = part.has_people ? std::vector<mrpt::poses::CPose2D>(part.scans.size()) : negativePoses.at(i);
+		TLegsPerScan all, dyn, late;
+		runFilter(options, classifier, part.scans, poses, all, dyn, late, &r.filter_s);
+		r.filter_scans += part.scans.size();
+		std::cout << "  " << std::left << std::setw(24) << part.name << std::right << std::setw(6) << part.scans.size();
+		if (part.has_people)
+		{
+			const auto det = scoreAgainstAnnotations(all, part.annotations, kMatchRadius_m, options.detector.max_range_m);
+			const auto dy = scoreAgainstAnnotations(dyn, part.annotations, kMatchRadius_m, options.detector.max_range_m);
+			const auto lt = scoreAgainstAnnotations(late, part.annotations, kMatchRadius_m, options.detector.max_range_m);
+			addPositive(r.detected, det);
+			addPositive(r.dynamic, dy);
+			addPositive(r.late, lt);
+			const dynamic::CLegDetector detector(options.detector, classifier);
+			countMissReasons(detector, part.scans, part.annotations, all, kMatchRadius_m, r.miss_reasons);
+			std::cout << std::setw(11) << det.annotated << std::setw(11) << det.matched << " (" << std::setprecision(3)
+					  << ratio(det.matched, det.annotated) << ")" << std::setw(10) << dy.matched << " ("
+					  << ratio(dy.matched, dy.annotated) << ")" << std::setw(8) << lt.matched << " ("
+					  << ratio(lt.matched, lt.annotated) << ")\n";
+		}
+		else
+		{
+			TLevel d, y, l;
+			addNegative(d, all);
+			addNegative(y, dyn);
+			addNegative(l, late);
+			addNegative(r.detected, all);
+			addNegative(r.dynamic, dyn);
+			addNegative(r.late, late);
+			std::cout << std::setw(11) << "-" << std::setw(19) << std::setprecision(3) << d.falsePerScan()
+					  << std::setw(18) << y.falsePerScan() << std::setw(16) << l.falsePerScan() << "\n";
+		}
 	}
-	std::sort(positives.begin(), positives.end());
-	return positives;
+	std::cout << "  missed by the detector, verdict of the nearest candidate:";
+	for (const auto& [why, n] : r.miss_reasons) std::cout << " " << why << "=" << n;
+	std::cout << "\n";
+	return r;
+}
+
+void printLevels(const std::string& method, const TMethodResult& r)
+{
+	const std::pair<const char*, const TLevel*> rows[] = {
+		{"detected", &r.detected}, {"dynamic (causal)", &r.dynamic}, {"dynamic (late)", &r.late}};
+	for (const auto& [name, level] : rows)
+		std::cout << "  " << std::left << std::setw(26) << method << std::setw(18) << name << std::right
+				  << std::setprecision(3) << std::setw(8) << level->recall() << std::setw(20) << level->falsePerScan()
+				  << "\n";
+}
+
+TTrailResult printTrail(const std::string& title, const dynamic::CDynamicObjectFilter::TOptions& options,
+						const TClassifierPtr& classifier, const std::string& rawlog, const std::string& png)
+{
+	const auto trail = trailOnStaticLog(options, classifier, rawlog, png);
+	std::cout << "  " << std::left << std::setw(26) << title << std::right << std::setw(8) << trail.static_cells
+			  << std::setw(14) << trail.occupied_without << " / " << trail.occupied_with << std::setw(12)
+			  << trail.trail_without << " / " << trail.trail_with << std::setw(10) << trail.person_tracks
+			  << std::setw(12) << std::setprecision(1) << ratio(trail.masked_beams, trail.scans) << "   " << png
+			  << "\n";
+	return trail;
 }
 }  // namespace
 
-dynamic::CDynamicObjectFilter::TOptions loadDynamicOptions(const std::string& profileIni, const std::string& configFile)
-{
-	dynamic::CDynamicObjectFilter::TOptions options;
-	mrpt::config::CConfigFileMemory profile(profileIni);
-	common::loadOptions(options, profile, "dynamic_objects");
-	if (!configFile.empty())
-	{
-		if (!fs::exists(configFile)) throw std::runtime_error(configFile + ": no such file");
-		mrpt::config::CConfigFile cfg(configFile);
-		common::loadOptions(options, cfg, "dynamic_objects");
-	}
-	return options;
-}
-
 int runLegsSuite(const std::string& dataDir, const std::string& outDir, const std::string& configFile)
 {
-	const auto options = loadDynamicOptions(dynamic::kHokuyoLegsProfileIni, configFile);
-	if (!configFile.empty()) std::cout << "Options of " << configFile << " [dynamic_objects] applied on top of:\n";
-	const dynamic::CLegDetector detector(options.detector);
-	std::cout << "Profile for 0.35 deg Hokuyo scans (thesis defaults otherwise):\n" << dynamic::kHokuyoLegsProfileIni << "\n";
-	const double matchRadius_m = 0.20;
-	double filter_s = 0, detect_s = 0;
-	size_t filterScans = 0, detectScans = 0;
+	const auto rulesOptions = dynamic::loadDynamicOptions(dynamic::kHokuyoLegsProfileIni, configFile);
+	auto learnedOptions = dynamic::loadDynamicOptions(std::string(dynamic::kHokuyoLegsProfileIni) +
+												 dynamic::kLearnedLegsProfileLines,
+											 configFile);
+	std::cout << "Profile for 0.35 deg Hokuyo scans (thesis defaults otherwise):\n"
+			  << dynamic::kHokuyoLegsProfileIni << "with the learned classifier also:\n"
+			  << dynamic::kLearnedLegsProfileLines;
+	if (!configFile.empty()) std::cout << "then the [dynamic_objects] keys of " << configFile << "\n";
 
-	// 1. No people: every leg is false. Single-scan detector, and the filter
-	// (legs flagged dynamic) with the robot motion from scan-to-keyframe-map ICP.
-	std::map<std::string, std::vector<CObservation2DRangeScan::Ptr>> bySensor;
-	for (const auto& s : readScans(dataDir + "/negative_2.rawlog")) bySensor[s->sensorLabel].push_back(s);
-	size_t negScans = 0, negLegs = 0, negDynamic = 0, negLate = 0;
-	std::cout << "negative_2 (no people; robot motion by ICP per sensor)\n"
-			  << "  sensor        scans  legs/scan  dynamic legs/scan  (late)  ICP path (m)\n";
-	for (const auto& [label, scans] : bySensor)
-	{
-		const auto poses = icpPoses(scans);
-		double path_m = 0;
-		for (size_t i = 1; i < poses.size(); ++i) path_m += poses[i].distanceTo(poses[i - 1]);
-		const auto t0 = std::chrono::steady_clock::now();
-		for (const auto& scan : scans) detector.detect(*scan);
-		detect_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-		detectScans += scans.size();
-		TLegsPerScan all, dyn, late;
-		runFilter(options, scans, poses, all, dyn, late, &filter_s);
-		filterScans += scans.size();
-		size_t legs = 0, dynLegs = 0, lateLegs = 0;
-		for (size_t i = 0; i < scans.size(); ++i)
-			legs += all[i].size(), dynLegs += dyn[i].size(), lateLegs += late[i].size();
-		std::cout << "  " << std::left << std::setw(12) << label << std::right << std::setw(7) << scans.size()
-				  << std::setw(11) << std::fixed << std::setprecision(3) << ratio(legs, scans.size()) << std::setw(19)
-				  << ratio(dynLegs, scans.size()) << std::setw(16) << ratio(lateLegs, scans.size()) << std::setw(14)
-				  << std::setprecision(1) << path_m << "\n";
-		negScans += scans.size();
-		negLegs += legs;
-		negDynamic += dynLegs;
-		negLate += lateLegs;
-	}
+	const auto parts = dynamic::loadLegDataset(dataDir);
+	std::map<size_t, std::vector<mrpt::poses::CPose2D>> negativePoses;
+	std::cout << "\nRobot motion of the parts without people (no odometry, no tf): ICP per sensor\n";
+	for (size_t i = 0; i < parts.size(); ++i)
+		if (!parts[i].has_people)
+		{
+			negativePoses[i] = icpPoses(parts[i].scans);
+			double path_m = 0;
+			for (size_t k = 1; k < negativePoses[i].size(); ++k)
+				path_m += negativePoses[i][k].distanceTo(negativePoses[i][k - 1]);
+			std::cout << "  " << std::left << std::setw(24) << parts[i].name << std::right << std::fixed
+					  << std::setprecision(1) << path_m << " m\n";
+		}
 
-	// 2. Annotated legs inside the arc (static scanner: identity poses).
-	TScored detTotal, dynTotal, lateTotal;
-	std::map<std::string, size_t> reasons;
-	std::cout << std::setprecision(3) << "\npositive_*_extracted (annotated legs in the arc -15..15 deg, < 5 m; match radius "
-			  << matchRadius_m << " m)\n"
-			  << "  file                    scans  legs  detected  recall  flagged dynamic  recall  (late)  in-arc unmatched\n";
-	for (const auto& p : positiveFiles(dataDir))
-	{
-		const auto scans = readScans(p.string());
-		const std::string csv = (p.parent_path() / (p.stem().string() + ".scans.csv")).string();
-		const auto labels = readAnnotations(csv);
-		if (labels.size() != scans.size())
-			throw std::runtime_error(csv + ": " + std::to_string(labels.size()) + " rows but " + p.string() +
-									 " has " + std::to_string(scans.size()) + " scans");
-		TLegsPerScan all, dyn, late;
-		runFilter(options, scans, std::vector<mrpt::poses::CPose2D>(scans.size()), all, dyn, late, &filter_s);
-		filterScans += scans.size();
-		const auto det = scoreAgainstAnnotations(all, labels, matchRadius_m, options.detector.max_range_m);
-		const auto dy = scoreAgainstAnnotations(dyn, labels, matchRadius_m, options.detector.max_range_m);
-		const auto lt = scoreAgainstAnnotations(late, labels, matchRadius_m, options.detector.max_range_m);
-		addTo(lateTotal, lt);
-		countMissReasons(detector, scans, labels, all, matchRadius_m, reasons);
-		std::cout << "  " << std::left << std::setw(22) << p.stem().string() << std::right << std::setw(7)
-				  << det.scans << std::setw(6) << det.annotated << std::setw(10) << det.matched << std::setw(8)
-				  << ratio(det.matched, det.annotated) << std::setw(17) << dy.matched << std::setw(8)
-				  << ratio(dy.matched, dy.annotated) << std::setw(8) << ratio(lt.matched, lt.annotated) << std::setw(18)
-				  << det.arc_unmatched << "\n";
-		addTo(detTotal, det);
-		addTo(dynTotal, dy);
-	}
-	std::cout << "  missed by the detector, verdict of the nearest segment:";
-	for (const auto& [why, n] : reasons) std::cout << " " << why << "=" << n;
-	std::cout << "\n";
+	// 1. The rule set (thesis 4.7.1 with the Hokuyo profile).
+	const auto rules = evaluateMethod("Thesis rules (CLegDetector rules, Hokuyo profile)", rulesOptions, parts,
+									  [](size_t) { return TClassifierPtr(); }, negativePoses);
 
-	// 3. Static scanner, people walking: trail of occupied cells.
+	// 2. The learned classifier, cross-validated: each part is scored with a
+	// forest that never saw it nor its fold (legs_cross_validation.h).
+	const auto trainOptions = dynamic::loadLegTrainOptions(configFile);
+	const auto folds = dynamic::trainFoldClassifiers(parts, learnedOptions.detector, trainOptions);
+	const auto learned = evaluateMethod(
+		"Learned classifier, " + std::to_string(folds.models.size()) + "-fold cross-validated (" + folds.description + ")",
+		learnedOptions, parts, [&](size_t i) { return folds.models[static_cast<size_t>(folds.fold_of_part[i])]; },
+		negativePoses);
+
+	std::cout << "\nSummary (recall of annotated legs; false legs per scan on the parts without people)\n"
+			  << "  method                    output             recall  false legs per scan\n";
+	printLevels("thesis rules", rules);
+	printLevels("learned (cross-validated)", learned);
+
+	// 3. Static scanner, people walking: trail of occupied cells. The learned
+	// filter uses a forest trained on every labelled part (the demo has none).
 	fs::create_directories(outDir);
-	const std::string png = outDir + "/legs_demo_maps.png";
-	const auto trail = trailOnStaticLog(options, dataDir + "/demo_stationary_simple_environment.rawlog", png);
-	filter_s += trail.filter_s;
-	filterScans += trail.scans;
+	const auto fullModel = dynamic::trainOnAll(parts, learnedOptions.detector, trainOptions);
+	std::cout << "\ndemo_stationary_simple_environment (static scanner, people walking)\n"
+			  << "  method                    static  occupied w/o / with  trail w/o / with  persons  masked/scan\n";
+	const std::string demo = dataDir + "/demo_stationary_simple_environment.rawlog";
+	const auto rulesTrail = printTrail("thesis rules", rulesOptions, nullptr, demo, outDir + "/legs_demo_maps_rules.png");
+	const auto trail = printTrail("learned", learnedOptions, fullModel, demo, outDir + "/legs_demo_maps.png");
 	const double reduction = trail.trail_without ? 1.0 - ratio(trail.trail_with, trail.trail_without) : 0.0;
-	std::cout << "\ndemo_stationary_simple_environment (" << trail.scans << " scans, static scanner)\n"
-			  << "  static cells (median background): " << trail.static_cells << "\n"
-			  << "  occupied cells without / with exclusion: " << trail.occupied_without << " / "
-			  << trail.occupied_with << "\n"
-			  << "  trail cells (occupied, > 1 cell from static structure) without / with: " << trail.trail_without
-			  << " / " << trail.trail_with << "\n"
-			  << "  person tracks created: " << trail.person_tracks
-			  << ", masked beams per scan: " << ratio(trail.masked_beams, trail.scans) << "\n"
-			  << "  maps side by side: " << png << "\n\n";
 
-	// Final keys: the leg detector (what the issue scores: detections per
-	// scan); the filter's dynamic flags (detection + tracking + motion) as
-	// legs_dynamic_*.
-	std::cout << std::setprecision(4) << "legs_negative_scans=" << negScans << "\nlegs_annotated=" << detTotal.annotated
-			  << "\nlegs_recall_within_max_range=" << ratio(detTotal.matched_in_range, detTotal.annotated_in_range)
-			  << "\nlegs_arc_unmatched_per_scan=" << ratio(detTotal.arc_unmatched, detTotal.scans)
-			  << "\nlegs_dynamic_recall=" << ratio(dynTotal.matched, dynTotal.annotated)
-			  << "\nlegs_dynamic_false_per_scan=" << ratio(negDynamic, negScans)
-			  << "\nlegs_late_dynamic_recall=" << ratio(lateTotal.matched, lateTotal.annotated)
-			  << "\nlegs_late_dynamic_false_per_scan=" << ratio(negLate, negScans)
-			  << "\nghost_cells_without=" << trail.trail_without << "\nghost_cells_with=" << trail.trail_with
-			  << "\ndetect_us_per_scan_768_beams=" << 1e6 * detect_s / std::max<size_t>(1, detectScans)
+	// Final keys: the filter with the learned classifier, cross-validated, at
+	// the level the batch map uses (a leg is a person's if its track is
+	// confirmed dynamic at any time: late exclusion); the causal level (as
+	// known at the scan) and the rules for comparison.
+	const double filter_s = learned.filter_s + trail.filter_s;
+	const size_t filterScans = learned.filter_scans + trail.scans;
+	std::cout << std::setprecision(4) << "\nlegs_negative_scans=" << learned.detected.negative_scans
+			  << "\nlegs_annotated=" << learned.detected.annotated
+			  << "\nlegs_rules_detected_recall=" << rules.detected.recall()
+			  << "\nlegs_rules_detected_false_per_scan=" << rules.detected.falsePerScan()
+			  << "\nlegs_rules_dynamic_recall=" << rules.dynamic.recall()
+			  << "\nlegs_rules_dynamic_false_per_scan=" << rules.dynamic.falsePerScan()
+			  << "\nlegs_detected_recall=" << learned.detected.recall()
+			  << "\nlegs_detected_false_per_scan=" << learned.detected.falsePerScan()
+			  << "\nlegs_causal_recall=" << learned.dynamic.recall()
+			  << "\nlegs_causal_false_per_scan=" << learned.dynamic.falsePerScan()
+			  << "\nghost_cells_rules_without=" << rulesTrail.trail_without
+			  << "\nghost_cells_rules_with=" << rulesTrail.trail_with << "\nghost_cells_without=" << trail.trail_without
+			  << "\nghost_cells_with=" << trail.trail_with
 			  << "\nfilter_us_per_scan=" << 1e6 * filter_s / std::max<size_t>(1, filterScans)
-			  << "\nlegs_recall=" << ratio(detTotal.matched, detTotal.annotated)
-			  << "\nlegs_false_per_scan=" << ratio(negLegs, negScans) << "\nghost_cells_reduction=" << reduction
-			  << "\n";
+			  << "\nlegs_recall=" << learned.late.recall() << "\nlegs_false_per_scan=" << learned.late.falsePerScan()
+			  << "\nghost_cells_reduction=" << reduction << "\n";
 	return 0;
 }
 

@@ -246,8 +246,8 @@ int runLegsSimSuite(const std::string& dataDir, const std::string& outDir, const
 {
 	// Defaults (or [dynamic_objects] of configFile), and for comparison the
 	// thesis rule set (the simulated LMS200 has the thesis' 1 deg).
-	const auto options = loadDynamicOptions("", configFile);
-	const auto thesis = loadDynamicOptions(dynamic::kThesisProfileIni, "");
+	const auto options = dynamic::loadDynamicOptions("", configFile);
+	const auto thesis = dynamic::loadDynamicOptions(dynamic::kThesisProfileIni, "");
 	std::vector<fs::path> samples;
 	for (const auto& e : fs::directory_iterator(dataDir))
 		if (fs::exists(e.path() / "sim.rawlog") && fs::exists(e.path() / "beam_labels.csv.gz") &&

@@ -47,9 +47,11 @@ CStaticEvidenceGrid::TOptions staticGridOptions(const CDynamicObjectFilter::TOpt
 }
 }  // namespace
 
-CDynamicObjectFilter::CDynamicObjectFilter(const TOptions& options)
+CDynamicObjectFilter::CDynamicObjectFilter(const TOptions& options) : CDynamicObjectFilter(options, nullptr) {}
+
+CDynamicObjectFilter::CDynamicObjectFilter(const TOptions& options, std::shared_ptr<const CLegClassifier> classifier)
 	: m_options(options),
-	  m_detector(options.detector),
+	  m_detector(classifier ? CLegDetector(options.detector, std::move(classifier)) : CLegDetector(options.detector)),
 	  m_legs(options.tracker),
 	  m_persons(personTrackerOptions(options)),
 	  m_seen(seenGridOptions(options)),
@@ -126,8 +128,10 @@ const TDynamicFrame& CDynamicObjectFilter::process(const mrpt::obs::CObservation
 	for (const auto& l : legsWorld)
 		m_frame.leg_static_since_s.push_back(m_options.static_evidence ? m_static.staticSince(l, t_s) : kNever);
 	const bool useEvidence = m_options.tracker.confirm_free_hits > 0;
+	std::vector<double> legProbability;
+	for (const auto& l : m_frame.legs) legProbability.push_back(l.leg_probability);
 	m_frame.leg_track = m_legs.update(legsWorld, sensorPose, t_s, useEvidence ? &m_frame.leg_in_free_space : nullptr,
-									  &m_frame.leg_static_since_s);
+									  &m_frame.leg_static_since_s, &legProbability);
 	std::vector<mrpt::math::TPoint2D> personsWorld;
 	std::vector<int> personOfLeg;
 	pairLegs(legsWorld, personsWorld, personOfLeg);
@@ -136,8 +140,11 @@ const TDynamicFrame& CDynamicObjectFilter::process(const mrpt::obs::CObservation
 	// pair of static legs changes its midpoint when the pairing changes).
 	std::vector<bool> personEvidence(personsWorld.size(), false);  // every person has a leg
 	std::vector<double> personStaticSince(personsWorld.size(), -kNever);  // all its legs on static structure
+	std::vector<double> personProbability(personsWorld.size(), 0.0), legsOfPerson(personsWorld.size(), 0.0);
 	for (size_t i = 0; i < legsWorld.size(); ++i)
 	{
+		personProbability[static_cast<size_t>(personOfLeg[i])] += legProbability[i];
+		legsOfPerson[static_cast<size_t>(personOfLeg[i])] += 1;
 		auto& since = personStaticSince[static_cast<size_t>(personOfLeg[i])];
 		since = std::max(since, m_frame.leg_static_since_s[i]);
 		const TTrack* leg = m_legs.find(m_frame.leg_track[i]);
@@ -145,9 +152,10 @@ const TDynamicFrame& CDynamicObjectFilter::process(const mrpt::obs::CObservation
 		if ((!useEvidence || m_frame.leg_in_free_space[i]) && (!m_options.person_needs_dynamic_leg || legDynamic))
 			personEvidence[static_cast<size_t>(personOfLeg[i])] = true;
 	}
+	for (size_t p = 0; p < personsWorld.size(); ++p) personProbability[p] /= std::max(1.0, legsOfPerson[p]);
 	const bool usePersonEvidence = useEvidence || m_options.person_needs_dynamic_leg;
-	const std::vector<int> personIds =
-		m_persons.update(personsWorld, sensorPose, t_s, usePersonEvidence ? &personEvidence : nullptr, &personStaticSince);
+	const std::vector<int> personIds = m_persons.update(
+		personsWorld, sensorPose, t_s, usePersonEvidence ? &personEvidence : nullptr, &personStaticSince, &personProbability);
 
 	m_frame.person_track.resize(m_frame.legs.size());
 	m_frame.leg_is_dynamic.resize(m_frame.legs.size());

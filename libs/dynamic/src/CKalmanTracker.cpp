@@ -137,14 +137,17 @@ bool CKalmanTracker::meetsConfirmation(const TTrack& t) const
 	// when the pose slips). Structure established later may be the track's
 	// own object standing still (a person waiting), which may walk off.
 	if (t.on_static || t.static_hits > o.confirm_max_static_fraction * t.hits) return false;
+	// Shape evidence over the track's life (CLegClassifier probabilities).
+	if (t.leg_probability_sum < o.confirm_min_leg_probability * t.hits) return false;
 	return t.travel_m >= o.confirm_travel_m && relative && t.hits >= o.confirm_hits &&
 		   t.free_hits >= o.confirm_free_hits && t.moving_frames >= o.confirm_moving_frames;
 }
 
 void CKalmanTracker::registerHit(TTrack& t, const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose,
-								 bool evidence, double staticSince_s) const
+								 bool evidence, double staticSince_s, double legProbability) const
 {
 	++t.hits;
+	t.leg_probability_sum += legProbability;
 	t.on_static = std::isfinite(staticSince_s);
 	t.static_hits += staticSince_s <= t.t_birth_s;
 	t.misses = 0;
@@ -199,8 +202,10 @@ void CKalmanTracker::takeOverFromMemory(double t_s, std::vector<int>& owner)
 
 std::vector<int> CKalmanTracker::update(const std::vector<mrpt::math::TPoint2D>& observations,
 										const mrpt::poses::CPose2D& sensorPose, double t_s,
-										const std::vector<bool>* motionEvidence, const std::vector<double>* staticSince_s)
+										const std::vector<bool>* motionEvidence, const std::vector<double>* staticSince_s,
+										const std::vector<double>* legProbability)
 {
+	const auto probability = [&](size_t oi) { return legProbability ? (*legProbability)[oi] : 1.0; };
 	const auto since = [&](size_t oi)
 	{ return staticSince_s ? (*staticSince_s)[oi] : std::numeric_limits<double>::infinity(); };
 	// Without evidence from the caller the requirement is waived (thesis rule).
@@ -228,7 +233,7 @@ std::vector<int> CKalmanTracker::update(const std::vector<mrpt::math::TPoint2D>&
 		t.observation = static_cast<int>(oi);
 		t.t_seen_s = t_s;
 		correct(t, observations[oi]);
-		registerHit(t, observations[oi], sensorPose, evidence(oi), since(oi));
+		registerHit(t, observations[oi], sensorPose, evidence(oi), since(oi), probability(oi));
 	}
 
 	// Missed tracks: null counter; dropped after max_misses (dynamic ones are remembered).
@@ -273,6 +278,7 @@ std::vector<int> CKalmanTracker::update(const std::vector<mrpt::math::TPoint2D>&
 		t.free_hits = evidence(oi);
 		t.on_static = std::isfinite(since(oi));
 		t.static_hits = since(oi) <= t_s;
+		t.leg_probability_sum = probability(oi);
 		if (best != m_memory.end())
 		{
 			--m_nextId;  // the remembered id is reused
@@ -285,6 +291,7 @@ std::vector<int> CKalmanTracker::update(const std::vector<mrpt::math::TPoint2D>&
 			t.birth_m = best->track.birth_m;
 			t.travel_m = best->track.travel_m;
 			t.hits = best->track.hits + 1;
+			t.leg_probability_sum = best->track.leg_probability_sum + probability(oi);
 			t.free_hits = best->track.free_hits + evidence(oi);
 			t.t_birth_s = best->track.t_birth_s;  // the same object: its static-world record too
 			t.static_hits = best->track.static_hits + (since(oi) <= t.t_birth_s);

@@ -1,4 +1,5 @@
 #include <hslam/dynamic/CLegDetector.h>
+#include <hslam/dynamic/leg_features.h>
 
 #include <cmath>
 #include <limits>
@@ -47,22 +48,23 @@ bool isCut(const std::vector<TBeam>& beams, size_t edge, long outside, double ma
 	return o.valid && std::abs(o.r - beams[edge].r) < maxJump;
 }
 
-TLegSegment describe(const std::vector<TBeam>& beams, size_t first, size_t last, double sx, double sy)
+/** A segment of beams [first, last] whose end points are `pts` (in beam order). */
+TLegSegment describe(const std::vector<mrpt::math::TPoint2D>& pts, size_t first, size_t last, double sx, double sy)
 {
 	TLegSegment s;
 	s.first_beam = first;
 	s.last_beam = last;
-	for (size_t i = first; i <= last; ++i)
+	for (const auto& p : pts)
 	{
-		s.x_m += beams[i].x;
-		s.y_m += beams[i].y;
+		s.x_m += p.x;
+		s.y_m += p.y;
 	}
-	const double n = static_cast<double>(last - first + 1);
+	const double n = static_cast<double>(pts.size());
 	s.x_m /= n;
 	s.y_m /= n;
 	s.range_m = std::hypot(s.x_m - sx, s.y_m - sy);
 	s.bearing_rad = std::atan2(s.y_m - sy, s.x_m - sx);
-	const TBeam &a = beams[first], &b = beams[last];
+	const auto &a = pts.front(), &b = pts.back();
 	s.width_m = std::hypot(b.x - a.x, b.y - a.y);
 	// Depth: largest distance of a point in front of the chord (towards the
 	// sensor at the origin). Signed distance with the sensor side positive.
@@ -74,10 +76,16 @@ TLegSegment describe(const std::vector<TBeam>& beams, size_t first, size_t last,
 			nx = -nx;
 			ny = -ny;
 		}
-		for (size_t i = first; i <= last; ++i)
-			s.depth_m = std::max(s.depth_m, nx * (beams[i].x - a.x) + ny * (beams[i].y - a.y));
+		for (const auto& p : pts) s.depth_m = std::max(s.depth_m, nx * (p.x - a.x) + ny * (p.y - a.y));
 	}
 	return s;
+}
+
+std::vector<mrpt::math::TPoint2D> pointsOf(const std::vector<TBeam>& beams, size_t first, size_t last)
+{
+	std::vector<mrpt::math::TPoint2D> pts;
+	for (size_t i = first; i <= last; ++i) pts.push_back({beams[i].x, beams[i].y});
+	return pts;
 }
 }  // namespace
 
@@ -92,6 +100,7 @@ const char* toString(ELegReject r)
 		case ELegReject::width: return "width";
 		case ELegReject::depth: return "depth";
 		case ELegReject::cut_by_length: return "cut_by_length";
+		case ELegReject::classifier: return "classifier";
 	}
 	return "?";
 }
@@ -113,8 +122,25 @@ double beamBearing(const mrpt::obs::CObservation2DRangeScan& scan, size_t i)
 	return local + scan.sensorPose.yaw();
 }
 
-CLegDetector::CLegDetector(const TOptions& options) : m_options(options)
+namespace
 {
+std::shared_ptr<const CLegClassifier> loadClassifier(const std::string& path)
+{
+	if (path.empty()) return nullptr;
+	return std::make_shared<const CLegClassifier>(CLegClassifier::load(path));
+}
+}  // namespace
+
+CLegDetector::CLegDetector(const TOptions& options) : CLegDetector(options, loadClassifier(options.classifier_model))
+{
+}
+
+CLegDetector::CLegDetector(const TOptions& options, std::shared_ptr<const CLegClassifier> classifier)
+	: m_options(options), m_classifier(std::move(classifier))
+{
+	// Clusters are formed from beams a little beyond the range limit so one
+	// straddling it is whole; it is kept if its centroid is within the limit.
+	m_options.clustering.max_range_m = options.max_range_m + options.clustering.cluster_distance_m;
 	std::istringstream in(options.find_interv_bands_m);
 	double v;
 	while (in >> v)
@@ -163,6 +189,29 @@ int CLegDetector::maxBeams(double range_m, double angularStep_rad) const
 
 std::vector<TSegmentCandidate> CLegDetector::candidates(const mrpt::obs::CObservation2DRangeScan& scan) const
 {
+	return m_classifier ? classifiedCandidates(scan) : ruleCandidates(scan);
+}
+
+std::vector<TSegmentCandidate> CLegDetector::classifiedCandidates(const mrpt::obs::CObservation2DRangeScan& scan) const
+{
+	std::vector<TSegmentCandidate> out;
+	const double sx = scan.sensorPose.x(), sy = scan.sensorPose.y();
+	const auto clusters = clusterScan(scan, m_options.clustering);
+	for (size_t k = 0; k < clusters.size(); ++k)
+	{
+		const auto& cluster = clusters[k];
+		TSegmentCandidate c;
+		c.segment = describe(cluster.points, cluster.firstBeam(), cluster.lastBeam(), sx, sy);
+		if (c.segment.range_m >= m_options.max_range_m) continue;
+		c.segment.leg_probability = m_classifier->probability(legFeatures(clusters, k, scan));
+		if (c.segment.leg_probability < m_options.classifier_threshold) c.verdict = ELegReject::classifier;
+		out.push_back(c);
+	}
+	return out;
+}
+
+std::vector<TSegmentCandidate> CLegDetector::ruleCandidates(const mrpt::obs::CObservation2DRangeScan& scan) const
+{
 	const auto beams = beamsOf(scan);
 	const double step = angularStep(scan);
 	const auto& o = m_options;
@@ -185,7 +234,7 @@ std::vector<TSegmentCandidate> CLegDetector::candidates(const mrpt::obs::CObserv
 			++last;
 		}
 		TSegmentCandidate c;
-		c.segment = describe(beams, i, last, scan.sensorPose.x(), scan.sensorPose.y());
+		c.segment = describe(pointsOf(beams, i, last), i, last, scan.sensorPose.x(), scan.sensorPose.y());
 		const int edges = static_cast<int>(standsInFront(beams, i, static_cast<long>(i) - 1, o.edge_jump_m)) +
 						  static_cast<int>(standsInFront(beams, last, static_cast<long>(last) + 1, o.edge_jump_m));
 		if (static_cast<int>(c.segment.beams()) < findInterv(beams[i].r, step))

@@ -42,6 +42,10 @@ CMappingPipeline::CMappingPipeline(const mrpt::config::CConfigFileBase& cfg)
 		{
 			throw common::config_error(std::string("[dynamic_objects] ") + e.what());
 		}
+		catch (const std::runtime_error& e)  // classifier_model missing or not a model
+		{
+			throw common::config_error(std::string("[dynamic_objects] classifier_model: ") + e.what());
+		}
 	}
 }
 

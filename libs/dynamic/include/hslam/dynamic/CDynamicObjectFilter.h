@@ -133,7 +133,11 @@ class CDynamicObjectFilter
 	};
 
 	CDynamicObjectFilter() : CDynamicObjectFilter(TOptions()) {}
+	/** Throws what CLegDetector's constructor throws (bad bands, a
+	 * classifier_model that cannot be loaded). */
 	explicit CDynamicObjectFilter(const TOptions& options);
+	/** With a leg classifier in memory (detector.classifier_model ignored). */
+	CDynamicObjectFilter(const TOptions& options, std::shared_ptr<const CLegClassifier> classifier);
 
 	/** Processes one scan taken with the robot at `robotPose` (world) at
 	 * time `t_s` (s, increasing). */

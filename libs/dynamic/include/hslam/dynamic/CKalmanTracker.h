@@ -96,12 +96,14 @@ struct TTrack
 	double t_birth_s = 0;  //!< time of the first observation
 	bool on_static = false;  //!< last observation lies on established static structure (see update())
 	int static_hits = 0;  //!< observations on static structure established before the track was born
+	double leg_probability_sum = 0;  //!< sum over its observations of the classifier's leg probability (see update())
 	int observation = -1;  //!< index of the observation associated in the last update, -1 if missed
 	/** Polar state in the sensor frame of the last update (thesis H.1 obj[]). */
 	double range_m = 0, bearing_rad = 0, v_radial_mps = 0, v_angular_radps = 0;
 
 	mrpt::math::TPoint2D position() const { return {x[0], x[1]}; }
 	double speed_mps() const { return std::hypot(x[2], x[3]); }
+	double meanLegProbability() const { return hits > 0 ? leg_probability_sum / hits : 0.0; }
 };
 
 class CKalmanTracker
@@ -128,6 +130,7 @@ class CKalmanTracker
 		double confirm_speed_sigma = 1.0;  //!< ... and this many standard deviations (Kalman covariance) above zero
 		bool confirm_relative_motion = true;  //!< also require confirm_travel_m in the sensor frame (not attached to the robot; thesis: no)
 		double confirm_max_static_fraction = 0.0;  //!< at most this share of hits on structure older than the track (0: none; 1: off)
+		double confirm_min_leg_probability = 0.0;  //!< mean classifier leg probability of its observations needed to confirm (0: off)
 
 		template <class V>
 		void visit(V& v)
@@ -151,6 +154,7 @@ class CKalmanTracker
 			v.real("confirm_speed_sigma", confirm_speed_sigma, 0.0, 100.0);
 			v.flag("confirm_relative_motion", confirm_relative_motion);
 			v.real("confirm_max_static_fraction", confirm_max_static_fraction, 0.0, 1.0);
+			v.real("confirm_min_leg_probability", confirm_min_leg_probability, 0.0, 1.0);
 		}
 	};
 
@@ -167,11 +171,17 @@ class CKalmanTracker
 	 * observation lies on established static structure (CStaticEvidenceGrid,
 	 * +infinity: not on it): a track is never confirmed on such an
 	 * observation, nor while more than confirm_max_static_fraction of its
-	 * observations lay on structure established before the track was born. */
+	 * observations lay on structure established before the track was born.
+	 * `legProbability` (optional, one per observation, default 1) is the
+	 * leg classifier's probability (CLegClassifier): a track is confirmed
+	 * only while the mean over its observations is at least
+	 * confirm_min_leg_probability (one scan rarely tells a leg from a chair
+	 * leg; many views of the same object do). */
 	std::vector<int> update(const std::vector<mrpt::math::TPoint2D>& observations,
 							const mrpt::poses::CPose2D& sensorPose, double t_s,
 							const std::vector<bool>* motionEvidence = nullptr,
-							const std::vector<double>* staticSince_s = nullptr);
+							const std::vector<double>* staticSince_s = nullptr,
+							const std::vector<double>* legProbability = nullptr);
 
 	/** Live tracks (tentative, dynamic and ghost), after the last update. */
 	const std::vector<TTrack>& tracks() const { return m_tracks; }
@@ -197,7 +207,7 @@ class CKalmanTracker
 	void updatePolar(TTrack& t, const mrpt::poses::CPose2D& sensorPose) const;
 	TTrack newTrack(const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose, double t_s);
 	void registerHit(TTrack& t, const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose, bool evidence,
-					 double staticSince_s) const;
+					 double staticSince_s, double legProbability) const;
 	bool significantSpeed(const TTrack& t) const;
 	bool meetsConfirmation(const TTrack& t) const;
 	void takeOverFromMemory(double t_s, std::vector<int>& owner);

@@ -39,13 +39,23 @@
  *     0-180 mm (only the upper bound of the thesis is kept: a lower bound
  *     of 50 mm rejects most legs seen at 0.35 deg, see docs/dynamic.md).
  *
+ * Learned alternative (beyond the thesis, whose 4.7.5 names leg recognition
+ * the weak point): with classifier_model set, segments are leg_tracker's
+ * clusters (leg_clusters.h) and a random forest (CLegClassifier) decides;
+ * a cluster is a leg candidate at leg probability >= classifier_threshold,
+ * and the probability travels with it to the tracker, which confirms a
+ * track only on the mean over its life (confirm_min_leg_probability).
+ *
  * Deviation: the thesis ends a segment at the first beam beyond 3200 mm but
  * counts invalid (zero) readings as near; here invalid beams end a segment
  * and count as "far" for the edge test. */
 #pragma once
 
+#include <hslam/dynamic/CLegClassifier.h>
+#include <hslam/dynamic/leg_clusters.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -61,6 +71,7 @@ struct TLegSegment
 	double range_m = 0, bearing_rad = 0;  //!< centroid in polar form
 	double width_m = 0;  //!< chord between the end points
 	double depth_m = 0;  //!< bulge towards the sensor (see file comment)
+	double leg_probability = 1.0;  //!< classifier's leg probability (1 with the thesis rules)
 	size_t beams() const { return last_beam - first_beam + 1; }
 };
 
@@ -73,7 +84,8 @@ enum class ELegReject
 	no_dip_edge,
 	width,
 	depth,
-	cut_by_length
+	cut_by_length,
+	classifier  //!< leg probability below classifier_threshold
 };
 
 const char* toString(ELegReject r);
@@ -101,6 +113,9 @@ class CLegDetector
 		double min_width_m = 0.08, max_width_m = 0.20;  //!< figure 150
 		double min_depth_m = 0.0, max_depth_m = 0.18;  //!< figure 150 upper bound (see file comment)
 		bool require_isolated = false;  //!< reject segments cut by the length limit (thesis: no)
+		std::string classifier_model;  //!< CLegClassifier file; empty: the rules above (thesis)
+		double classifier_threshold = 0.2;  //!< least leg probability of a candidate (see file comment)
+		TClusterOptions clustering;  //!< segmentation with a classifier (max_range_m is set from the above)
 
 		template <class V>
 		void visit(V& v)
@@ -119,13 +134,21 @@ class CLegDetector
 			v.real("min_depth_m", min_depth_m, -1.0, 5.0);
 			v.real("max_depth_m", max_depth_m, -1.0, 5.0);
 			v.flag("require_isolated", require_isolated);
+			v.text("classifier_model", classifier_model);
+			v.real("classifier_threshold", classifier_threshold, 0.0, 1.0);
+			v.real("cluster_distance_m", clustering.cluster_distance_m, 0.001, 5.0);
+			v.integer("cluster_min_points", clustering.min_points, 1, 10000);
 		}
 	};
 
 	CLegDetector() : CLegDetector(TOptions()) {}
 	/** Throws std::invalid_argument if find_interv_bands_m is not an
-	 * increasing list of positive numbers. */
+	 * increasing list of positive numbers, std::runtime_error (naming the
+	 * file) if classifier_model cannot be loaded. */
 	explicit CLegDetector(const TOptions& options);
+	/** With a classifier already in memory (classifier_model is ignored;
+	 * null: the rules). */
+	CLegDetector(const TOptions& options, std::shared_ptr<const CLegClassifier> classifier);
 
 	/** Accepted leg segments of `scan`, in beam order. */
 	std::vector<TLegSegment> detect(const mrpt::obs::CObservation2DRangeScan& scan) const;
@@ -141,9 +164,15 @@ class CLegDetector
 	int maxBeams(double range_m, double angularStep_rad) const;
 
 	const TOptions& options() const { return m_options; }
+	/** The classifier in use, null with the thesis rules. */
+	const std::shared_ptr<const CLegClassifier>& classifier() const { return m_classifier; }
 
    private:
+	std::vector<TSegmentCandidate> ruleCandidates(const mrpt::obs::CObservation2DRangeScan& scan) const;
+	std::vector<TSegmentCandidate> classifiedCandidates(const mrpt::obs::CObservation2DRangeScan& scan) const;
+
 	TOptions m_options;
+	std::shared_ptr<const CLegClassifier> m_classifier;
 	std::vector<double> m_bandLimits_m;  //!< parsed bands + max_range_m
 };
 

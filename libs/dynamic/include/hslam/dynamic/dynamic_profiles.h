@@ -3,6 +3,11 @@
  * config file, so every value is range-checked the same way). */
 #pragma once
 
+#include <hslam/dynamic/CDynamicObjectFilter.h>
+#include <hslam/dynamic/CLegClassifier.h>
+
+#include <string>
+
 namespace hslam::dynamic
 {
 /** The thesis' rule set (4.7.1-4.7.2, appendix H) where the defaults go
@@ -42,5 +47,27 @@ min_width_m = 0.05
 max_width_m = 0.25
 require_isolated = true
 )";
+
+/** Lines added to kHokuyoLegsProfileIni when the learned classifier
+ * decides (CLegClassifier; the rule thresholds above then only set the
+ * range limit): candidates down to a low single-scan leg probability, a
+ * track confirmed only when the mean over its observations is high, and a
+ * person track by its own motion (the chair-leg pairs that made it need a
+ * dynamic leg no longer pass the classifier). docs/dynamic.md gives the
+ * cross-validated sweep these values come from. */
+inline const char* kLearnedLegsProfileLines = R"(classifier_threshold = 0.05
+confirm_min_leg_probability = 0.4
+person_needs_dynamic_leg = false
+)";
+
+/** Filter options: the INI text `profileIni` (a profile above, or several
+ * concatenated), then the [dynamic_objects] section of `configFile` (if
+ * not empty) on top, both range-checked. Throws common::config_error
+ * naming the file and key. */
+CDynamicObjectFilter::TOptions loadDynamicOptions(const std::string& profileIni, const std::string& configFile);
+
+/** Forest training options: defaults, then [leg_classifier] of `configFile`
+ * (if not empty). */
+CLegClassifier::TTrainOptions loadLegTrainOptions(const std::string& configFile);
 
 }  // namespace hslam::dynamic
