@@ -21,16 +21,16 @@
 #include <hslam/dynamic/CDynamicObjectFilter.h>
 #include <hslam/dynamic/dynamic_profiles.h>
 #include <hslam/dynamic/leg_dataset.h>
+#include <hslam/dynamic/leg_scoring.h>
 #include <hslam/dynamic/leg_training.h>
 #include <hslam/dynamic/occupied_cells.h>
 #include <hslam/io/CRawlogReader.h>
-#include <hslam/matching/CKeyframePointMap.h>
 #include <hslam/maps/CLaserGridInserter.h>
 #include <hslam/maps/grid_rendering.h>
+#include <hslam/matching/icp_odometry.h>
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/maps/CSimplePointsMap.h>
-#include <mrpt/slam/CICP.h>
 #include <mrpt/system/datetime.h>
 
 #include <algorithm>
@@ -57,52 +57,12 @@ namespace
 using mrpt::obs::CObservation2DRangeScan;
 namespace fs = std::filesystem;
 
-struct TScored
-{
-	size_t scans = 0, annotated = 0, matched = 0, arc_unmatched = 0, outside_arc = 0;
-	size_t annotated_in_range = 0, matched_in_range = 0;
-};
+using dynamic::TLegsPerScan;
+using TScored = dynamic::TLegScore;
 
 using TClassifierPtr = std::shared_ptr<const dynamic::CLegClassifier>;
 
-/** Legs reported for one scan (robot = laser frame here). */
-using TLegsPerScan = std::vector<std::vector<dynamic::TLegSegment>>;
 
-/** Matches reported legs to the annotations of each scan, one to one,
- * nearest first within matchRadius_m; reported legs outside the arc are
- * not scored. */
-TScored scoreAgainstAnnotations(const TLegsPerScan& reported,
-								const std::vector<std::vector<mrpt::math::TPoint2D>>& labels, double matchRadius_m,
-								double maxRange_m)
-{
-	TScored s;
-	for (size_t i = 0; i < reported.size(); ++i)
-	{
-		++s.scans;
-		const auto& legs = reported[i];
-		std::vector<bool> used(legs.size(), false);
-		for (const auto& a : labels[i])
-		{
-			++s.annotated;
-			const bool inRange = std::hypot(a.x, a.y) < maxRange_m;
-			s.annotated_in_range += inRange;
-			int best = -1;
-			double bestD = matchRadius_m;
-			for (size_t j = 0; j < legs.size(); ++j)
-			{
-				const double d = std::hypot(legs[j].x_m - a.x, legs[j].y_m - a.y);
-				if (!used[j] && d <= bestD) bestD = d, best = static_cast<int>(j);
-			}
-			if (best < 0) continue;
-			used[static_cast<size_t>(best)] = true;
-			++s.matched;
-			s.matched_in_range += inRange;
-		}
-		for (size_t j = 0; j < legs.size(); ++j)
-			if (!used[j]) (dynamic::inAnnotatedArc({legs[j].x_m, legs[j].y_m}) ? s.arc_unmatched : s.outside_arc)++;
-	}
-	return s;
-}
 
 /** Verdicts of the rule-1 segments nearest to annotated legs the detector missed. */
 void countMissReasons(const dynamic::CLegDetector& detector, const std::vector<CObservation2DRangeScan::Ptr>& scans,
@@ -126,84 +86,7 @@ void countMissReasons(const dynamic::CLegDetector& detector, const std::vector<C
 		}
 }
 
-/** Runs the whole filter over a scan sequence; returns, per scan, all
- * detected legs, those flagged dynamic at that scan (causal: what
- * beam_is_dynamic and tracks.csv use) and those whose leg or person track
- * is confirmed dynamic at that scan or later (what the late exclusion
- * removes from the map); adds the time spent to *time_s. */
-void runFilter(const dynamic::CDynamicObjectFilter::TOptions& options, const TClassifierPtr& classifier,
-			   const std::vector<CObservation2DRangeScan::Ptr>& scans, const std::vector<mrpt::poses::CPose2D>& poses,
-			   TLegsPerScan& all, TLegsPerScan& dynamicOnly, TLegsPerScan& lateDynamic, double* time_s)
-{
-	dynamic::CDynamicObjectFilter filter(options, classifier);
-	all.assign(scans.size(), {});
-	dynamicOnly.assign(scans.size(), {});
-	lateDynamic.assign(scans.size(), {});
-	std::vector<std::vector<std::pair<int, int>>> ids(scans.size());  // per leg: leg track, person track
-	std::set<int> dynamicLegIds, dynamicPersonIds;
-	for (size_t i = 0; i < scans.size(); ++i)
-	{
-		const auto t0 = std::chrono::steady_clock::now();
-		const auto& frame = filter.process(*scans[i], poses[i], mrpt::Clock::toDouble(scans[i]->timestamp));
-		*time_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-		all[i] = frame.legs;
-		for (size_t k = 0; k < frame.legs.size(); ++k)
-		{
-			if (frame.leg_is_dynamic[k]) dynamicOnly[i].push_back(frame.legs[k]);
-			ids[i].push_back({frame.leg_track[k], frame.person_track[k]});
-		}
-		for (const auto& t : frame.leg_tracks)
-			if (t.state == dynamic::ETrackState::dynamic) dynamicLegIds.insert(t.id);
-		for (const auto& t : frame.person_tracks)
-			if (t.state == dynamic::ETrackState::dynamic) dynamicPersonIds.insert(t.id);
-	}
-	for (size_t i = 0; i < scans.size(); ++i)
-		for (size_t k = 0; k < all[i].size(); ++k)
-			if (dynamicLegIds.count(ids[i][k].first) || dynamicPersonIds.count(ids[i][k].second))
-				lateDynamic[i].push_back(all[i][k]);
-}
 
-/** ICP odometry of one sensor (negative_2 has no odometry and no tf): the
- * robot motion the tracker compensates. Laser frame = robot frame. Each
- * scan is matched against the world points of recent keyframes
- * (matching::CKeyframePointMap, as MRPT's icp-slam does), seeded by the
- * previous motion (matching only the previous scan drifts like a random
- * walk: 1.70 instead of 1.63 confirmed false legs per scan). */
-std::vector<mrpt::poses::CPose2D> icpPoses(const std::vector<CObservation2DRangeScan::Ptr>& scans)
-{
-	mrpt::slam::CICP icp;
-	icp.options.maxIterations = 200;
-	icp.options.thresholdDist = 0.3;
-	icp.options.thresholdAng = 2 * M_PI / 180;
-	icp.options.ALFA = 0.5;
-	icp.options.smallestThresholdDist = 0.02;
-	std::vector<mrpt::poses::CPose2D> poses(scans.size());
-	mrpt::poses::CPose2D lastDelta;
-	matching::CKeyframePointMap::TOptions kfOptions;
-	kfOptions.insertion_distance_m = 0.3;
-	kfOptions.insertion_angle_rad = 10 * M_PI / 180;
-	kfOptions.max_keyframes = 20;
-	matching::CKeyframePointMap keyframes(kfOptions);
-	for (size_t i = 0; i < scans.size(); ++i)
-	{
-		mrpt::maps::CSimplePointsMap current;
-		current.insertObservation(*scans[i]);
-		if (i > 0)
-		{
-			const mrpt::poses::CPose2D guess = poses[i - 1] + lastDelta;
-			const auto pdf = icp.Align(&keyframes.reference(guess), &current, guess);
-			poses[i] = pdf->getMeanVal();
-			lastDelta = poses[i] - poses[i - 1];
-		}
-		if (keyframes.empty() || keyframes.wantsKeyframe(poses[i]))
-		{
-			std::vector<mrpt::math::TPoint2D> points(current.size());
-			for (size_t k = 0; k < current.size(); ++k) current.getPoint(k, points[k].x, points[k].y);
-			keyframes.addKeyframe(poses[i], points);
-		}
-	}
-	return poses;
-}
 
 struct TTrailResult
 {
@@ -327,15 +210,16 @@ TMethodResult evaluateMethod(const std::string& title, const dynamic::CDynamicOb
 		const auto& part = parts[i];
 		const auto classifier = classifierOf(i);
 		const auto poses = part.has_people ? std::vector<mrpt::poses::CPose2D>(part.scans.size()) : negativePoses.at(i);
-		TLegsPerScan all, dyn, late;
-		runFilter(options, classifier, part.scans, poses, all, dyn, late, &r.filter_s);
+		const auto levels = dynamic::runLegFilter(options, classifier, part.scans, poses);
+		const auto &all = levels.detected, &dyn = levels.dynamic, &late = levels.late;
+		r.filter_s += levels.seconds;
 		r.filter_scans += part.scans.size();
 		std::cout << "  " << std::left << std::setw(24) << part.name << std::right << std::setw(6) << part.scans.size();
 		if (part.has_people)
 		{
-			const auto det = scoreAgainstAnnotations(all, part.annotations, kMatchRadius_m, options.detector.max_range_m);
-			const auto dy = scoreAgainstAnnotations(dyn, part.annotations, kMatchRadius_m, options.detector.max_range_m);
-			const auto lt = scoreAgainstAnnotations(late, part.annotations, kMatchRadius_m, options.detector.max_range_m);
+			const auto det = dynamic::scoreAgainstAnnotations(all, part.annotations, kMatchRadius_m, options.detector.max_range_m);
+			const auto dy = dynamic::scoreAgainstAnnotations(dyn, part.annotations, kMatchRadius_m, options.detector.max_range_m);
+			const auto lt = dynamic::scoreAgainstAnnotations(late, part.annotations, kMatchRadius_m, options.detector.max_range_m);
 			addPositive(r.detected, det);
 			addPositive(r.dynamic, dy);
 			addPositive(r.late, lt);
@@ -405,7 +289,7 @@ int runLegsSuite(const std::string& dataDir, const std::string& outDir, const st
 	for (size_t i = 0; i < parts.size(); ++i)
 		if (!parts[i].has_people)
 		{
-			negativePoses[i] = icpPoses(parts[i].scans);
+			negativePoses[i] = matching::icpOdometry(parts[i].scans);
 			double path_m = 0;
 			for (size_t k = 1; k < negativePoses[i].size(); ++k)
 				path_m += negativePoses[i][k].distanceTo(negativePoses[i][k - 1]);
