@@ -403,3 +403,26 @@ TEST(LegClassifierRealData, HeldOutHokuyoLegsAreRecognised)
 	EXPECT_GE(static_cast<double>(found[1]) / annotated, 0.60);
 	EXPECT_LE(static_cast<double>(falseLegs[1]) / negScans, 1.0);
 }
+
+TEST(LegClassifierRealData, ShippedHokuyoModelIsWhatHslamLegsTrainWritesAndTheIniMatchesTheProfile)
+{
+	// config_ini/hslam-legs-hokuyo.ini must select what hslam-bench legs scores.
+	const auto profile = loadDynamicOptions(std::string(kHokuyoLegsProfileIni) + kLearnedLegsProfileLines, "");
+	const auto ini = loadDynamicOptions("", std::string(HSLAM_SOURCE_DIR) + "/config_ini/hslam-legs-hokuyo.ini");
+	EXPECT_EQ(ini.detector.max_range_m, profile.detector.max_range_m);
+	EXPECT_EQ(ini.detector.classifier_threshold, profile.detector.classifier_threshold);
+	EXPECT_EQ(ini.tracker.confirm_min_leg_probability, profile.tracker.confirm_min_leg_probability);
+	EXPECT_EQ(ini.person_needs_dynamic_leg, profile.person_needs_dynamic_leg);
+	EXPECT_EQ(ini.detector.classifier_model, "models/legs-hokuyo-forest.yml.gz");
+
+	// The shipped model answers like a forest trained now on all the data
+	// (hslam-legs-train: same profile, default forest options, fixed seed).
+	const auto shipped =
+		CLegClassifier::load(std::string(HSLAM_SOURCE_DIR) + "/config_ini/models/legs-hokuyo-forest.yml.gz");
+	const auto parts = loadLegDataset(std::string(HSLAM_SHARED_DATASETS_DIR) + "/legs");
+	const auto fresh = trainOnAll(parts, profile.detector, CLegClassifier::TTrainOptions());
+	const auto set = legTrainingSet(parts, {0, 3}, profile.detector);
+	ASSERT_GT(set.features.size(), 1000u);
+	for (size_t i = 0; i < set.features.size(); i += 37)
+		ASSERT_EQ(shipped.probability(set.features[i]), fresh->probability(set.features[i])) << "sample " << i;
+}

@@ -2,6 +2,7 @@
 #include <hslam/common/options_io.h>
 #include <hslam/common/parse_number.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -34,6 +35,15 @@ mrpt::config::CConfigFileMemory loadConfigWithOverrides(
 		cfg.write(o.section, o.key, o.value);
 	}
 	return cfg;
+}
+
+void resolvePathNextToIni(mrpt::config::CConfigFileMemory& cfg, const std::string& section, const std::string& key,
+						  const std::string& iniFile)
+{
+	const std::string value = cfg.read_string(section, key, "");
+	if (value.empty() || iniFile.empty() || std::filesystem::path(value).is_absolute()) return;
+	const auto besideIni = std::filesystem::path(iniFile).parent_path() / value;
+	if (std::filesystem::exists(besideIni)) cfg.write(section, key, besideIni.string());
 }
 
 }  // namespace hslam::common

@@ -30,7 +30,7 @@ void appendTrackRows(const TDynamicFrame& frame, size_t scanIndex, std::vector<T
 void writeTracksCsv(std::ostream& out, const std::vector<TTrackRow>& rows)
 {
 	out << "t_s,scan,kind,id,state,seen,x_robot_m,y_robot_m,x_world_m,y_world_m,vx_world_mps,vy_world_mps,"
-		   "speed_mps,range_m,bearing_deg,v_radial_mps,v_angular_degps,hits,misses,travel_m\n";
+		   "speed_mps,range_m,bearing_deg,v_radial_mps,v_angular_degps,hits,misses,travel_m,mean_leg_probability\n";
 	out << std::fixed;
 	for (const auto& r : rows)
 	{
@@ -39,7 +39,7 @@ void writeTracksCsv(std::ostream& out, const std::vector<TTrackRow>& rows)
 			<< toString(t.state) << ',' << (r.seen ? 1 : 0) << ',' << std::setprecision(3) << r.x_robot_m << ','
 			<< r.y_robot_m << ',' << t.x[0] << ',' << t.x[1] << ',' << t.x[2] << ',' << t.x[3] << ','
 			<< t.speed_mps() << ',' << t.range_m << ',' << t.bearing_rad * 180 / M_PI << ',' << t.v_radial_mps << ','
-			<< t.v_angular_radps * 180 / M_PI << ',' << t.hits << ',' << t.misses << ',' << t.travel_m << '\n';
+			<< t.v_angular_radps * 180 / M_PI << ',' << t.hits << ',' << t.misses << ',' << t.travel_m << ',' << t.meanLegProbability() << '\n';
 	}
 }
 

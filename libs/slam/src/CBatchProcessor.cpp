@@ -31,7 +31,8 @@ std::vector<std::string> CBatchProcessor::knownSections()
 
 TBatchResult CBatchProcessor::run()
 {
-	const auto cfg = common::loadConfigWithOverrides(m_request.config_file, m_request.overrides);
+	auto cfg = common::loadConfigWithOverrides(m_request.config_file, m_request.overrides);
+	common::resolvePathNextToIni(cfg, "dynamic_objects", "classifier_model", m_request.config_file);
 	common::checkKnownSections(cfg, knownSections());
 	CMappingPipeline pipeline(cfg);
 	TOutputOptions outputOptions;
