@@ -346,6 +346,9 @@ int runLegsSuite(const std::string& dataDir, const std::string& outDir, const st
 			  << "\nghost_cells_rules_with=" << rulesTrail.trail_with << "\nghost_cells_without=" << trail.trail_without
 			  << "\nghost_cells_with=" << trail.trail_with
 			  << "\nfilter_us_per_scan=" << 1e6 * filter_s / std::max<size_t>(1, filterScans)
+			  << "\nfilter_rules_us_per_scan_labelled=" << 1e6 * rules.filter_s / std::max<size_t>(1, rules.filter_scans)
+			  << "\nfilter_learned_us_per_scan_labelled=" << 1e6 * learned.filter_s / std::max<size_t>(1, learned.filter_scans)
+			  << "\nfilter_learned_vs_rules_time_ratio=" << learned.filter_s / std::max(1e-12, rules.filter_s)
 			  << "\nlegs_recall=" << learned.late.recall() << "\nlegs_false_per_scan=" << learned.late.falsePerScan()
 			  << "\nghost_cells_reduction=" << reduction << "\n";
 	return 0;
