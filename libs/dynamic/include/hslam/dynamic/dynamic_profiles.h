@@ -53,11 +53,15 @@ require_isolated = true
  * range limit): candidates down to a low single-scan leg probability, a
  * track confirmed only when the mean over its observations is high, and a
  * person track by its own motion (the chair-leg pairs that made it need a
- * dynamic leg no longer pass the classifier). docs/dynamic.md gives the
+ * dynamic leg no longer pass the classifier), and no wait for the track to
+ * step into space seen free before (the free-space evidence guarded the
+ * rules against clutter; the classifier and the static-world evidence do
+ * that now, and a cold start no longer delays confirmation). docs/dynamic.md gives the
  * cross-validated sweep these values come from. */
 inline const char* kLearnedLegsProfileLines = R"(classifier_threshold = 0.05
 confirm_min_leg_probability = 0.4
 person_needs_dynamic_leg = false
+confirm_free_hits = 0
 )";
 
 /** Filter options: the INI text `profileIni` (a profile above, or several
