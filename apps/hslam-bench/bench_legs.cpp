@@ -17,33 +17,25 @@
  * and the other levels' and timing keys. */
 #include "bench_common.h"
 
-#include <hslam/common/options_io.h>
 #include <hslam/dynamic/CDynamicObjectFilter.h>
 #include <hslam/dynamic/dynamic_profiles.h>
 #include <hslam/dynamic/leg_dataset.h>
 #include <hslam/dynamic/leg_scoring.h>
 #include <hslam/dynamic/leg_training.h>
 #include <hslam/dynamic/occupied_cells.h>
-#include <hslam/io/CRawlogReader.h>
 #include <hslam/maps/CLaserGridInserter.h>
 #include <hslam/maps/grid_rendering.h>
 #include <hslam/matching/icp_odometry.h>
-#include <mrpt/config/CConfigFile.h>
-#include <mrpt/config/CConfigFileMemory.h>
-#include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/system/datetime.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <iomanip>
 #include <iostream>
 #include <map>
-#include <set>
-#include <sstream>
 
 namespace hslam::bench
 {

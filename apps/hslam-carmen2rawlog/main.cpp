@@ -1,6 +1,7 @@
 /* hslam-carmen2rawlog: converts a CARMEN log (plain or .gz) into an
  * observations-only MRPT rawlog plus a TUM file of reference poses.
  * All the work is in hslam::io::convertCarmenLog (libs/io). */
+#include <hslam/common/command_line.h>
 #include <hslam/common/options_io.h>
 #include <hslam/io/carmen_import.h>
 
@@ -25,15 +26,6 @@ hslam::io::TCarmenImportOptions optionsFrom(bool lenient, const std::string& clo
 	hslam::common::loadOptions(options, cfg, "carmen_import");
 	return options;
 }
-bool helpOrVersionAsked(int argc, char** argv)
-{
-	for (int i = 1; i < argc; ++i)
-	{
-		const std::string arg = argv[i];
-		if (arg == "-h" || arg == "--help" || arg == "--version") return true;
-	}
-	return false;
-}
 }  // namespace
 
 int main(int argc, char** argv)
@@ -53,7 +45,7 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<std::string> maxRange("", "max-range",
 											  "No-return range (m); default: derived from the log", false, "0", "M", cmd);
 		// MRPT's TCLAP returns false (after printing) for --help/--version and for bad arguments.
-		if (!cmd.parse(argc, argv)) return helpOrVersionAsked(argc, argv) ? 0 : 1;
+		if (!cmd.parse(argc, argv)) return hslam::common::exitCodeAfterParseStop(argc, argv);
 
 		const auto options = optionsFrom(lenient.getValue(), clock.getValue(), period.getValue(), maxRange.getValue());
 		const auto report =

@@ -1,6 +1,7 @@
 /* hslam-evaluate: ATE and RPE of an estimated 2D trajectory against a
  * reference trajectory, both TUM files. Prints a table; --json also writes
  * the figures to a file. Exit code 0 on success, 1 on any error. */
+#include <hslam/common/command_line.h>
 #include <hslam/common/parse_number.h>
 #include <hslam/eval/evaluate_trajectory.h>
 #include <hslam/eval/evaluation_json.h>
@@ -15,18 +16,6 @@
 
 namespace
 {
-/** TCLAP's parse() returns false both after --help/--version and after a
- * usage error (already reported); only the former is a success. */
-bool helpOrVersionRequested(int argc, char** argv)
-{
-	for (int i = 1; i < argc; ++i)
-	{
-		const std::string arg = argv[i];
-		if (arg == "-h" || arg == "--help" || arg == "--version") return true;
-	}
-	return false;
-}
-
 std::string formatSeconds(double seconds)
 {
 	char text[32];
@@ -64,7 +53,7 @@ int main(int argc, char** argv)
 											  "Largest timestamp difference (s) between matched poses (default " +
 												  formatSeconds(options.max_dt_s) + ")",
 											  false, formatSeconds(options.max_dt_s), "S", cmd);
-		if (!cmd.parse(argc, argv)) return helpOrVersionRequested(argc, argv) ? 0 : 1;
+		if (!cmd.parse(argc, argv)) return hslam::common::exitCodeAfterParseStop(argc, argv);
 
 		options.max_dt_s = parseMaxDt_s(maxDtArg.getValue());
 		const auto errors = hslam::eval::evaluateTumFiles(referenceArg.getValue(), estimateArg.getValue(), options);

@@ -5,6 +5,7 @@
  * legs profile (dynamic_profiles.h) and the [dynamic_objects] keys of
  * --config; forest settings from its [leg_classifier] section.
  * Cross-validated scores of the whole filter: hslam-bench legs. */
+#include <hslam/common/command_line.h>
 #include <hslam/dynamic/dynamic_profiles.h>
 #include <hslam/dynamic/leg_training.h>
 
@@ -17,16 +18,6 @@
 
 namespace
 {
-bool helpOrVersionRequested(int argc, char** argv)
-{
-	for (int i = 1; i < argc; ++i)
-	{
-		const std::string arg = argv[i];
-		if (arg == "-h" || arg == "--help" || arg == "--version") return true;
-	}
-	return false;
-}
-
 void printImportance(const hslam::dynamic::CLegClassifier& model)
 {
 	const auto importance = model.featureImportance();
@@ -49,7 +40,7 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<std::string> configArg(
 			"c", "config", "INI: [dynamic_objects] overrides the Hokuyo legs profile, [leg_classifier] the forest",
 			false, "", "INI", cmd);
-		if (!cmd.parse(argc, argv)) return helpOrVersionRequested(argc, argv) ? 0 : 1;
+		if (!cmd.parse(argc, argv)) return hslam::common::exitCodeAfterParseStop(argc, argv);
 
 		const auto options = loadDynamicOptions(std::string(kHokuyoLegsProfileIni) + kLearnedLegsProfileLines,
 												configArg.getValue());

@@ -54,9 +54,7 @@ std::optional<TLegFeatures> featuresNear(const mrpt::obs::CObservation2DRangeSca
 	double bestD = 1e9;
 	for (size_t k = 0; k < clusters.size(); ++k)
 	{
-		TPoint2D c{0, 0};
-		for (const auto& p : clusters[k].points) c.x += p.x / clusters[k].points.size(), c.y += p.y / clusters[k].points.size();
-		const double d = std::hypot(c.x - near.x, c.y - near.y);
+		const double d = std::hypot(clusters[k].centroid.x - near.x, clusters[k].centroid.y - near.y);
 		if (d < bestD) bestD = d, best = k;
 	}
 	if (bestD > 0.3) return std::nullopt;
@@ -319,8 +317,7 @@ TEST(LegDataset, LabelsAnnotatedClustersLegsOthersInTheArcNonLegsOutsideUnlabell
 	ASSERT_EQ(clusters.size(), 3u);
 	TPoint2D annotated{0, 0};
 	for (const auto& c : clusters)
-		if (std::abs(c.points.front().y) < 0.1)
-			for (const auto& p : c.points) annotated.x += p.x / c.points.size(), annotated.y += p.y / c.points.size();
+		if (std::abs(c.centroid.y) < 0.1) annotated = c.centroid;
 	part.annotations = {{annotated}};
 	size_t legs = 0, nonLegs = 0, unlabelled = 0;
 	for (const auto& c : labelledClusters(part, TClusterOptions(), 5.0))

@@ -15,11 +15,10 @@ struct CLegClassifier::TImpl
 
 namespace
 {
+/** A 1 x N row viewing `f` (no copy: prediction runs per cluster per scan). */
 cv::Mat rowOf(const TLegFeatures& f)
 {
-	cv::Mat row(1, static_cast<int>(kLegFeatureCount), CV_32F);
-	for (size_t k = 0; k < kLegFeatureCount; ++k) row.at<float>(0, static_cast<int>(k)) = f[k];
-	return row;
+	return cv::Mat(1, static_cast<int>(kLegFeatureCount), CV_32F, const_cast<float*>(f.data()));
 }
 }  // namespace
 

@@ -68,6 +68,13 @@ std::vector<TScanCluster> clusterScan(const mrpt::obs::CObservation2DRangeScan& 
 		c.beams.push_back(beams[a].index);
 		c.points.push_back(beams[a].p);
 	}
+	for (auto& c : clusters)
+	{
+		c.centroid = {0, 0};
+		for (const auto& p : c.points) c.centroid.x += p.x, c.centroid.y += p.y;
+		c.centroid.x /= static_cast<double>(c.points.size());
+		c.centroid.y /= static_cast<double>(c.points.size());
+	}
 	clusters.erase(std::remove_if(clusters.begin(), clusters.end(),
 								  [&](const TScanCluster& c) { return static_cast<int>(c.points.size()) < options.min_points; }),
 				   clusters.end());

@@ -155,9 +155,7 @@ std::vector<TLabelledCluster> labelledClusters(const TLegDataPart& part, const T
 			const auto& c = clusters[k];
 			TLabelledCluster l;
 			l.scan = i;
-			for (const auto& p : c.points) l.centroid.x += p.x, l.centroid.y += p.y;
-			l.centroid.x /= static_cast<double>(c.points.size());
-			l.centroid.y /= static_cast<double>(c.points.size());
+			l.centroid = c.centroid;
 			if (std::hypot(l.centroid.x, l.centroid.y) >= maxCentroidRange_m) continue;
 			l.features = legFeatures(clusters, k, *part.scans[i]);
 			if (!part.has_people)

@@ -14,13 +14,6 @@ constexpr double kNoReturnGap_m = 2.0;
 
 double distance(const TPoint2D& a, const TPoint2D& b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
-TPoint2D centroidOf(const std::vector<TPoint2D>& pts)
-{
-	TPoint2D c{0, 0};
-	for (const auto& p : pts) c.x += p.x, c.y += p.y;
-	return {c.x / static_cast<double>(pts.size()), c.y / static_cast<double>(pts.size())};
-}
-
 double medianOf(std::vector<double> v)
 {
 	std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
@@ -102,7 +95,7 @@ TLegFeatures legFeatures(const std::vector<TScanCluster>& clusters, size_t k,
 	const TScanCluster& cluster = clusters.at(k);
 	const auto& pts = cluster.points;
 	const size_t n = pts.size();
-	const TPoint2D c = centroidOf(pts);
+	const TPoint2D& c = cluster.centroid;
 
 	constexpr double kMaxNeighbour_m = 3.0;
 	constexpr double kCrowd_m = 1.0;
@@ -111,7 +104,7 @@ TLegFeatures legFeatures(const std::vector<TScanCluster>& clusters, size_t k,
 	for (size_t j = 0; j < clusters.size(); ++j)
 	{
 		if (j == k) continue;
-		const double d = distance(c, centroidOf(clusters[j].points));
+		const double d = distance(c, clusters[j].centroid);
 		crowd += d < kCrowd_m;
 		if (d < neighbour)
 		{

@@ -22,6 +22,7 @@ struct TScanCluster
 {
 	std::vector<size_t> beams;
 	std::vector<mrpt::math::TPoint2D> points;
+	mrpt::math::TPoint2D centroid;  //!< mean of points (robot frame)
 	size_t firstBeam() const { return beams.front(); }
 	size_t lastBeam() const { return beams.back(); }
 };
