@@ -55,7 +55,7 @@ function(hslam_add_test lib)
   add_executable(${target} ${srcs})
   target_link_libraries(${target} PRIVATE ${ARG_DEPS} hslam_testing GTest::gtest GTest::gtest_main)
   hslam_set_target_defaults(${target})
-  gtest_discover_tests(${target} DISCOVERY_MODE PRE_TEST
+  gtest_discover_tests(${target} DISCOVERY_MODE PRE_TEST DISCOVERY_TIMEOUT 120
                        WORKING_DIRECTORY ${CMAKE_BINARY_DIR}
                        PROPERTIES TIMEOUT 300)
 endfunction()

@@ -237,7 +237,7 @@ std::vector<TRealRow> runReal(const std::vector<TNamedExtractor>& extractors,
 			{
 				const auto& scan = scans[k];
 				const TLineSegmentList lines = ex->extract(scan);
-				row.validPoints += features::validScanPoints(scan).size();
+				row.validPoints += common::makeRangeData(scan).points.size();
 				row.lines += lines.size();
 				for (const auto& l : lines)
 				{

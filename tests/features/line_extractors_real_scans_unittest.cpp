@@ -42,15 +42,15 @@ std::vector<mrpt::obs::CObservation2DRangeScan> readScans(const std::string& raw
 size_t checkLines(const mrpt::obs::CObservation2DRangeScan& scan, const TLineSegmentList& lines,
 				  const std::string& method)
 {
-	const TScanPoints pts = validScanPoints(scan);
+	const TScanPoints pts = hslam::common::makeRangeData(scan).points;
 	for (size_t k = 0; k < lines.size(); ++k)
 	{
 		const TLineSegment& l = lines[k];
 		EXPECT_GE(l.point_count, 5u) << method;
 		EXPECT_GE(l.length_m(), 0.2) << method;
 		EXPECT_LE(l.first_beam, l.last_beam) << method;
-		EXPECT_TRUE(isValidBeam(scan, l.first_beam)) << method;
-		EXPECT_TRUE(isValidBeam(scan, l.last_beam)) << method;
+		EXPECT_TRUE(hslam::common::isValidReturn(scan, l.first_beam)) << method;
+		EXPECT_TRUE(hslam::common::isValidReturn(scan, l.last_beam)) << method;
 		if (k > 0)
 		{
 			EXPECT_LE(lines[k - 1].first_beam, l.first_beam) << method << ": lines ordered by first beam";

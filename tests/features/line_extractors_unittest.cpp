@@ -306,7 +306,7 @@ TEST_P(AllExtractors, GarbageScansNeverCrashAndGiveSaneLines)
 			EXPECT_TRUE(std::isfinite(l.rho_m) && std::isfinite(l.alpha_rad) && std::isfinite(l.fit_rms_m));
 			EXPECT_TRUE(std::isfinite(l.p0.x) && std::isfinite(l.p1.y));
 			EXPECT_LT(l.last_beam, n);
-			EXPECT_TRUE(isValidBeam(scan, l.first_beam) && isValidBeam(scan, l.last_beam));
+			EXPECT_TRUE(hslam::common::isValidReturn(scan, l.first_beam) && hslam::common::isValidReturn(scan, l.last_beam));
 		}
 	}
 }

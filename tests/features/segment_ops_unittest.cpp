@@ -108,7 +108,7 @@ TEST(DerivativeSegmentation, PeaksAtCornersAndJumpsOnly)
 	// noiseless box room: pieces start at the run start and at the corner beams
 	const auto sim = test::simulate(test::boxRoom(0));
 	const CDerivativeLineExtractor ex;
-	const TScanPoints pts = validScanPoints(sim.scan);
+	const TScanPoints pts = hslam::common::makeRangeData(sim.scan).points;
 	const auto pieces = ex.segmentByDerivative(pts);
 	ASSERT_EQ(pieces.size(), 3u);
 	EXPECT_NEAR(static_cast<double>(pts.beam[pieces[1].begin]), test::kRightCornerBeam, 1.0);
@@ -130,7 +130,7 @@ TEST(DerivativeSegmentation, OneLargeJumpDoesNotHideCorners)
 	walls.push_back({{8, 2.5}, {-1, 8}, 0});  // far wall behind the opening
 	const auto sim = test::simulate(walls);
 	const CDerivativeLineExtractor ex;
-	const TScanPoints pts = validScanPoints(sim.scan);
+	const TScanPoints pts = hslam::common::makeRangeData(sim.scan).points;
 	bool rightCorner = false, leftCorner = false;
 	for (const auto& p : ex.segmentByDerivative(pts))
 	{

@@ -34,7 +34,7 @@ matching::TLineScanFrame frameAt(const CPose2D& pose, double sigma, uint32_t see
 	const auto extractor = features::createLineExtractor("derivative", cfg, "line_extraction_derivative");
 	matching::TLineScanFrame f;
 	f.lines = extractor->extract(sim.scan);
-	f.points = features::validScanPoints(sim.scan).xy;
+	f.points = hslam::common::makeRangeData(sim.scan).points.xy;
 	f.pointsMap = matching::toPointsMap(f.points);
 	return f;
 }

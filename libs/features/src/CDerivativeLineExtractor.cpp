@@ -105,9 +105,9 @@ std::vector<TIndexRange> CDerivativeLineExtractor::segmentByDerivative(const TSc
 	return pieces;
 }
 
-TLineSegmentList CDerivativeLineExtractor::extract(const mrpt::obs::CObservation2DRangeScan& scan) const
+TLineSegmentList CDerivativeLineExtractor::extract(const common::TRangeData& scan) const
 {
-	const TScanPoints points = validScanPoints(scan);
+	const TScanPoints& points = scan.points;
 	std::vector<TIndexRange> ranges;
 	for (const TIndexRange& piece : segmentByDerivative(points))
 	{

@@ -6,9 +6,9 @@
 
 namespace hslam::features
 {
-TLineSegmentList CIepLineExtractor::extract(const mrpt::obs::CObservation2DRangeScan& scan) const
+TLineSegmentList CIepLineExtractor::extract(const common::TRangeData& scan) const
 {
-	const TScanPoints points = validScanPoints(scan);
+	const TScanPoints& points = scan.points;
 	std::vector<TIndexRange> ranges;
 	for (const TIndexRange& run : consecutiveBeamRuns(points))
 		for (const TIndexRange& piece : splitAtPointGaps(points, run, m_options.max_point_gap_m))

@@ -49,9 +49,9 @@ std::vector<std::vector<size_t>> cutAtGaps(const TScanPoints& points, const std:
 }
 }  // namespace
 
-TLineSegmentList CRansacLineExtractor::extract(const mrpt::obs::CObservation2DRangeScan& scan) const
+TLineSegmentList CRansacLineExtractor::extract(const common::TRangeData& scan) const
 {
-	const TScanPoints points = validScanPoints(scan);
+	const TScanPoints& points = scan.points;
 	const size_t n = points.size();
 	TLineSegmentList out;
 	if (n < static_cast<size_t>(std::max(2, m_options.min_inliers))) return out;

@@ -262,40 +262,28 @@ TLineSegmentList segmentsFromRanges(const TScanPoints& points, const std::vector
 
 namespace
 {
-mrpt::math::TPoint2D beamPoint(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& sensor,
-								size_t i)
-{
-	const double r = scan.getScanRange(i), a = scan.getScanAngle(i);
-	double x = 0, y = 0;
-	sensor.composePoint(r * std::cos(a), r * std::sin(a), x, y);
-	return {x, y};
-}
-
 /** `beam` lies just outside `line`, next to its end beam `endBeam`. */
-bool beamOccludes(const mrpt::obs::CObservation2DRangeScan& scan, const TLineSegment& line, long beam, size_t endBeam)
+bool beamOccludes(const common::TRangeData& scan, const TLineSegment& line, long beam, size_t endBeam)
 {
-	if (beam < 0 || static_cast<size_t>(beam) >= scan.getScanSize()) return true;  // scan border
+	if (beam < 0 || static_cast<size_t>(beam) >= scan.beamCount()) return true;  // scan border
 	const auto i = static_cast<size_t>(beam);
-	if (!isValidBeam(scan, i)) return true;  // unknown what lies there
-	const mrpt::poses::CPose2D sensor(scan.sensorPose);
-	const double a = sensor.phi() + scan.getScanAngle(i);
+	if (!scan.valid[i]) return true;  // unknown what lies there
 	const double nx = std::cos(line.alpha_rad), ny = std::sin(line.alpha_rad);
-	const double along = nx * std::cos(a) + ny * std::sin(a);
+	const double along = nx * scan.cos_bearing[i] + ny * scan.sin_bearing[i];
 	if (std::abs(along) < 1e-9) return true;
-	const double t = (line.rho_m - nx * sensor.x() - ny * sensor.y()) / along;  // range at which the beam meets the line
+	const double t = (line.rho_m - nx * scan.sensor_pose.x() - ny * scan.sensor_pose.y()) / along;  // range at which the beam meets the line
 	if (t <= 0) return true;
 	const double tol = kOcclusionTolerance_m + 3 * line.fit_rms_m;
-	if (scan.getScanRange(i) >= t - tol) return false;  // sees the line's extension or past it: the wall ends
+	if (scan.range_m[i] >= t - tol) return false;  // sees the line's extension or past it: the wall ends
 	// In front of the extension: an occluder, unless the point continues the
 	// end point (a concave corner: the next wall starts right there).
-	const double step_rad = scan.getScanSize() > 1 ? scan.aperture / static_cast<double>(scan.getScanSize() - 1) : 0;
-	const double endRange = scan.getScanRange(endBeam);
-	const mrpt::math::TPoint2D p = beamPoint(scan, sensor, i), q = beamPoint(scan, sensor, endBeam);
-	return std::hypot(p.x - q.x, p.y - q.y) > 2 * endRange * step_rad + tol;
+	const double endRange = scan.range_m[endBeam];
+	const mrpt::math::TPoint2D p = scan.alongBeam(i, scan.range_m[i]), q = scan.alongBeam(endBeam, endRange);
+	return std::hypot(p.x - q.x, p.y - q.y) > 2 * endRange * scan.points.beam_step_rad + tol;
 }
 }  // namespace
 
-void markOccludedEnds(const mrpt::obs::CObservation2DRangeScan& scan, TLineSegmentList& lines)
+void markOccludedEnds(const common::TRangeData& scan, TLineSegmentList& lines)
 {
 	for (TLineSegment& l : lines)
 	{

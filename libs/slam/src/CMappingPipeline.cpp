@@ -1,6 +1,7 @@
 #include <hslam/common/options_io.h>
 #include <hslam/dynamic/occupied_cells.h>
 #include <hslam/slam/CMappingPipeline.h>
+#include <hslam/slam/CLocalMapPoseEstimator.h>
 #include <hslam/slam/CScanMatchingPoseEstimator.h>
 #include <mrpt/obs/CObservationComment.h>
 #include <mrpt/system/datetime.h>
@@ -20,6 +21,8 @@ std::vector<std::string> CMappingPipeline::sections()
 	std::vector<std::string> s{"process", "grid", "laser_model", "pose_estimation", "dynamic_objects",
 							   "sonar_model", "tbf"};
 	for (const auto& e : CScanMatchingPoseEstimator::sections()) s.push_back(e);
+	for (const auto& e : CLocalMapPoseEstimator::sections())
+		if (std::find(s.begin(), s.end(), e) == s.end()) s.push_back(e);
 	return s;
 }
 
@@ -124,10 +127,12 @@ void CMappingPipeline::processScan(const mrpt::obs::CObservation2DRangeScan& sca
 		increment = m_odometry.takeIncrement();
 		if (increment.known) m_deadReckoningPose = m_deadReckoningPose + increment.delta;
 	}
+	const common::TRangeData rangeData = common::makeRangeData(scan);  // the one projection of this scan
 	TPoseEstimate estimate;
 	{
 		common::CStageTimer::CScope t(m_timer, "pose_estimation");
-		estimate = m_estimator->update(increment, scan);
+		const std::vector<bool> onPeople = peopleBeforeMatching(rangeData, increment);
+		estimate = m_estimator->update(increment, rangeData, onPeople.empty() ? nullptr : &onPeople);
 	}
 	const mrpt::poses::CPose2D pose = estimate.pose;
 	const std::vector<bool>* excluded = filterDynamicObjects(scan, pose);
@@ -161,6 +166,14 @@ void CMappingPipeline::processSonar(const mrpt::obs::CObservationRange& obs)
 	++m_counters.sonar_observations;
 	m_sonar.process(obs, m_lastEstimate + pending.delta, m_grid, m_timer);
 	m_counters.sonar_readings_inserted = m_sonar.counters().readings_inserted;
+}
+
+std::vector<bool> CMappingPipeline::peopleBeforeMatching(const common::TRangeData& scan,
+														 const TOdometryIncrement& increment) const
+{
+	if (!m_dynamicFilter || !m_dynamicOptions.exclude_from_matching) return {};
+	const mrpt::poses::CPose2D predicted = increment.known ? m_lastEstimate + increment.delta : m_lastEstimate;
+	return m_dynamicFilter->predictedDynamicBeams(scan, predicted, scan.t_s, kPredictedPoseMargin_m);
 }
 
 const std::vector<bool>* CMappingPipeline::filterDynamicObjects(const mrpt::obs::CObservation2DRangeScan& scan,

@@ -1,5 +1,4 @@
 #include <hslam/common/options_io.h>
-#include <hslam/features/scan_points.h>
 #include <hslam/matching/scan_points.h>
 #include <hslam/slam/CScanMatchingPoseEstimator.h>
 
@@ -65,10 +64,10 @@ bool CScanMatchingPoseEstimator::dueForIcp() const
 		   std::abs(m_sinceIcp.phi()) >= m_options.icp_every_rad;
 }
 
-matching::TLineScanFrame CScanMatchingPoseEstimator::makeFrame(const mrpt::obs::CObservation2DRangeScan& scan)
+matching::TLineScanFrame CScanMatchingPoseEstimator::makeFrame(const common::TRangeData& scan)
 {
 	matching::TLineScanFrame frame;
-	frame.points = features::validScanPoints(scan).xy;
+	frame.points = scan.points.xy;
 	frame.pointsMap = matching::toPointsMap(frame.points);
 	if (usesLines())
 	{
@@ -174,8 +173,8 @@ void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, T
 		estimate.match_method = lineMatch->method, estimate.match_quality = EMatchQuality::failed;
 }
 
-TPoseEstimate CScanMatchingPoseEstimator::update(const TOdometryIncrement& increment,
-												 const mrpt::obs::CObservation2DRangeScan& scan)
+TPoseEstimate CScanMatchingPoseEstimator::update(const TOdometryIncrement& increment, const common::TRangeData& scan,
+												 const std::vector<bool>* /*excludedBeams: MRPT ICP path, kept as it was*/)
 {
 	TPoseEstimate estimate;
 	if (m_started)

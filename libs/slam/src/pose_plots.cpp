@@ -151,7 +151,7 @@ mrpt::img::CImage renderScanDebugImage(const mrpt::obs::CObservation2DRangeScan&
 	}
 	img.drawCircle(col(0), row(0), 6, kAxes, 1);
 	img.line(col(0), row(0), col(0.5), row(0), kAxes, 1);  // heading: robot x axis points right
-	for (const auto& p : features::validScanPoints(scan).xy)
+	for (const auto& p : common::makeRangeData(scan).points.xy)
 		img.filledRectangle(col(p.x) - 1, row(p.y) - 1, col(p.x) + 1, row(p.y) + 1, mrpt::img::TColor(200, 30, 30));
 	for (const auto& l : estimate.lines)
 	{

@@ -54,6 +54,7 @@
  * No file I/O: see dynamic_outputs.h for the CSV rows and debug images. */
 #pragma once
 
+#include <hslam/common/range_data.h>
 #include <hslam/dynamic/CKalmanTracker.h>
 #include <hslam/dynamic/CLegDetector.h>
 #include <hslam/dynamic/CStaticEvidenceGrid.h>
@@ -91,6 +92,7 @@ class CDynamicObjectFilter
 	struct TOptions
 	{
 		bool enabled = true;  //!< used by the mapping pipeline (switch for comparisons)
+		bool exclude_from_matching = true;  //!< pipeline: beams on predicted dynamic tracks are not matched
 		CLegDetector::TOptions detector;
 		CKalmanTracker::TOptions tracker;  //!< shared by leg and person tracks
 		double pair_max_distance_m = 0.6;  //!< two legs of one person (step length)
@@ -110,6 +112,7 @@ class CDynamicObjectFilter
 		void visit(V& v)
 		{
 			v.flag("enabled", enabled);
+			v.flag("exclude_from_matching", exclude_from_matching);
 			detector.visit(v);
 			tracker.visit(v);
 			v.real("pair_max_distance_m", pair_max_distance_m, 0.0, 5.0);
@@ -143,6 +146,15 @@ class CDynamicObjectFilter
 	 * time `t_s` (s, increasing). */
 	const TDynamicFrame& process(const mrpt::obs::CObservation2DRangeScan& scan,
 								 const mrpt::poses::CPose2D& robotPose, double t_s);
+
+	/** Beams of `scan` ending where a leg or person track confirmed dynamic
+	 * is predicted at `t_s` (constant velocity from its Kalman state), for the
+	 * robot at `predictedPose`: what scan matching must leave out (thesis
+	 * figure 55 feeds the dynamic filter before the landmarks). Causal: it
+	 * uses only the tracks of earlier scans. The disc is the mask radius plus
+	 * `poseMargin_m` for the uncertainty of the predicted robot pose. */
+	std::vector<bool> predictedDynamicBeams(const common::TRangeData& scan, const mrpt::poses::CPose2D& predictedPose,
+											double t_s, double poseMargin_m) const;
 
 	const TDynamicFrame& lastFrame() const { return m_frame; }
 	const CKalmanTracker& legTracker() const { return m_legs; }

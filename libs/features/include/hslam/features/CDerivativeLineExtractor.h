@@ -107,7 +107,8 @@ class CDerivativeLineExtractor : public CLineExtractor
 	explicit CDerivativeLineExtractor(const TOptions& options) : m_options(options) {}
 
 	std::string name() const override { return "derivative"; }
-	TLineSegmentList extract(const mrpt::obs::CObservation2DRangeScan& scan) const override;
+	using CLineExtractor::extract;
+	TLineSegmentList extract(const common::TRangeData& scan) const override;
 
 	/** Steps 1-3 only: the piece boundaries of the valid points (each range
 	 * starts a piece), before the noise filters. Exposed for tests and plots. */

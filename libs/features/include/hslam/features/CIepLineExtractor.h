@@ -45,7 +45,8 @@ class CIepLineExtractor : public CLineExtractor
 	explicit CIepLineExtractor(const TOptions& options) : m_options(options) {}
 
 	std::string name() const override { return "iep"; }
-	TLineSegmentList extract(const mrpt::obs::CObservation2DRangeScan& scan) const override;
+	using CLineExtractor::extract;
+	TLineSegmentList extract(const common::TRangeData& scan) const override;
 
 	const TOptions& options() const { return m_options; }
 

@@ -4,6 +4,7 @@
  * method` in the INI selects any of them. */
 #pragma once
 
+#include <hslam/common/range_data.h>
 #include <hslam/features/line_segment.h>
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
@@ -23,7 +24,12 @@ class CLineExtractor
 	/** Lines of one scan, in the robot frame (the scan's sensorPose applied),
 	 * ordered by first_beam. Invalid beams (validity flag off, NaN, <= 0, or
 	 * at/after the scanner's maxRange) are never part of a line. */
-	virtual TLineSegmentList extract(const mrpt::obs::CObservation2DRangeScan& scan) const = 0;
+	virtual TLineSegmentList extract(const common::TRangeData& scan) const = 0;
+	/** Convenience for tools and tests: builds the scan's range data first. */
+	TLineSegmentList extract(const mrpt::obs::CObservation2DRangeScan& scan) const
+	{
+		return extract(common::makeRangeData(scan));
+	}
 };
 
 /** The method names createLineExtractor() accepts: derivative, iep, ransac. */

@@ -52,7 +52,8 @@ class CRansacLineExtractor : public CLineExtractor
 	explicit CRansacLineExtractor(const TOptions& options) : m_options(options) {}
 
 	std::string name() const override { return "ransac"; }
-	TLineSegmentList extract(const mrpt::obs::CObservation2DRangeScan& scan) const override;
+	using CLineExtractor::extract;
+	TLineSegmentList extract(const common::TRangeData& scan) const override;
 
 	const TOptions& options() const { return m_options; }
 

@@ -81,7 +81,7 @@ TLineSegmentList segmentsFromRanges(const TScanPoints& points, const std::vector
  * tol = kOcclusionTolerance_m + 3 fit_rms AND its point is farther than
  * 2 beam spacings + tol from the segment's end point (a concave corner, where
  * the next wall starts right at the end point, is a real end). */
-void markOccludedEnds(const mrpt::obs::CObservation2DRangeScan& scan, TLineSegmentList& lines);
+void markOccludedEnds(const common::TRangeData& scan, TLineSegmentList& lines);
 
 constexpr double kOcclusionTolerance_m = 0.05;
 

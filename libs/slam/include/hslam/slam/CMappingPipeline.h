@@ -135,6 +135,9 @@ class CMappingPipeline
 	void processObservation(const mrpt::obs::CObservation::Ptr& obs);
 	void processScan(const mrpt::obs::CObservation2DRangeScan& scan);
 	void processSonar(const mrpt::obs::CObservationRange& obs);
+	/** Beams on people predicted from the filter's earlier tracks (empty: none). */
+	std::vector<bool> peopleBeforeMatching(const common::TRangeData& scan, const TOdometryIncrement& increment) const;
+	static constexpr double kPredictedPoseMargin_m = 0.2;  //!< odometry error over one scan interval, generously
 	/** Runs the dynamic object filter; returns its per-beam mask or null. */
 	const std::vector<bool>* filterDynamicObjects(const mrpt::obs::CObservation2DRangeScan& scan,
 												  const mrpt::poses::CPose2D& pose);

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <hslam/common/CStageTimer.h>
+#include <hslam/common/range_data.h>
 #include <hslam/features/line_segment.h>
 #include <hslam/matching/match_result.h>
 #include <hslam/slam/COdometryTracker.h>
@@ -32,6 +33,8 @@ struct TPoseEstimate
 	bool match_accepted = false;  //!< the UKF fused it (not rejected by the gate)
 	double match_nis = 0;  //!< normalised innovation squared of the fused match
 	features::TLineSegmentList lines;  //!< lines extracted from this scan (robot frame), if any
+	std::string motion_prior;  //!< why the prior was not odometry ("gap", "frozen", "stalled", "jump"), else ""
+	long keyframe_id = -1;  //!< id in the estimator's keyframe store if this scan became a keyframe
 };
 
 class CPoseEstimator
@@ -40,9 +43,10 @@ class CPoseEstimator
 	virtual ~CPoseEstimator() = default;
 	virtual std::string name() const = 0;
 	/** Robot pose (world frame) at the time of `scan`, given the odometry
-	 * increment since the previous scan. */
-	virtual TPoseEstimate update(const TOdometryIncrement& increment,
-								 const mrpt::obs::CObservation2DRangeScan& scan) = 0;
+	 * increment since the previous scan; beams flagged in `excludedBeams`
+	 * (people, predicted by the dynamic filter) are not matched. */
+	virtual TPoseEstimate update(const TOdometryIncrement& increment, const common::TRangeData& scan,
+								 const std::vector<bool>* excludedBeams) = 0;
 	/** Writes the effective values of the estimator's own INI sections. */
 	virtual void saveOptions(mrpt::config::CConfigFileBase& /*out*/) const {}
 };
@@ -64,7 +68,7 @@ struct TPoseEstimationOptions
 	template <class V>
 	void visit(V& v)
 	{
-		v.choice("method", method, {"odometry", "lines", "icp", "lines+icp"});
+		v.choice("method", method, {"odometry", "lines", "icp", "lines+icp", "map", "lines+map"});
 		v.real("match_every_m", match_every_m, 0.0, 100.0);
 		v.degrees("match_every_deg", match_every_rad, 0.0, 360.0);
 		v.real("icp_every_m", icp_every_m, 0.0, 100.0);
@@ -85,7 +89,8 @@ class COdometryPoseEstimator : public CPoseEstimator
 {
    public:
 	std::string name() const override { return "odometry"; }
-	TPoseEstimate update(const TOdometryIncrement& increment, const mrpt::obs::CObservation2DRangeScan& scan) override;
+	TPoseEstimate update(const TOdometryIncrement& increment, const common::TRangeData& scan,
+						 const std::vector<bool>* excludedBeams) override;
 
    private:
 	mrpt::poses::CPose2D m_pose;

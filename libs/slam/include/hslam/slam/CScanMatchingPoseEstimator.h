@@ -82,7 +82,8 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 							   common::CStageTimer& timer);
 
 	std::string name() const override { return m_options.method; }
-	TPoseEstimate update(const TOdometryIncrement& increment, const mrpt::obs::CObservation2DRangeScan& scan) override;
+	TPoseEstimate update(const TOdometryIncrement& increment, const common::TRangeData& scan,
+						 const std::vector<bool>* excludedBeams) override;
 
 	/** Sections read, with their effective values (for config_used.ini). */
 	void saveOptions(mrpt::config::CConfigFileBase& out) const override;
@@ -93,7 +94,7 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	bool usesIcp() const { return m_options.method != "lines"; }
 	bool dueForMatch() const;
 	bool dueForIcp() const;
-	matching::TLineScanFrame makeFrame(const mrpt::obs::CObservation2DRangeScan& scan);
+	matching::TLineScanFrame makeFrame(const common::TRangeData& scan);
 	void predict(const TOdometryIncrement& increment);
 	void matchAndFuse(matching::TLineScanFrame& frame, TPoseEstimate& estimate);
 	/** ICP from each seed (world frame, preferred first); the best paired result. */

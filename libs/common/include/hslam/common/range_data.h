@@ -1,0 +1,72 @@
+/* hslam: one range-data record per laser scan, built once by the pipeline and
+ * handed to every stage (line extraction, scan matching, dynamic objects,
+ * grid insertion), like Cartographer's RangeData: beams with bearing, range
+ * and validity, and the valid returns as points in the robot frame.
+ *
+ * One rule decides whether a beam is a return (isValidReturn): MRPT's
+ * validity flag is set, the range is finite, > 0 and below the scanner's
+ * maxRange (a return at maxRange is the "no echo" value). Stages that use
+ * fewer beams (a maximum range of their own, a mask of people) filter the
+ * record; they never re-derive the geometry. Bearings come from MRPT's own
+ * scan geometry (CObservation2DRangeScan::getScanAngle), so a right-to-left
+ * or left-to-right scanner and any aperture are handled in one place. They
+ * are computed in double precision (MRPT's CSinCosLookUpTableFor2DScans is
+ * float: ~1e-7 relative error, and 181 cos/sin per scan cost ~3 us). */
+#pragma once
+
+#include <mrpt/math/TPoint2D.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace hslam::common
+{
+/** The valid returns of a scan as points in the robot frame, in beam order. */
+struct TScanPoints
+{
+	std::vector<mrpt::math::TPoint2D> xy;  //!< robot frame (m), in beam order
+	std::vector<double> range_m;  //!< the measured range of each point
+	std::vector<size_t> beam;  //!< index of each point's beam in the scan
+	double beam_step_rad = M_PI / 180;  //!< angle between neighbouring beams (aperture / (n - 1))
+
+	size_t size() const { return xy.size(); }
+};
+
+struct TRangeData
+{
+	static constexpr size_t kNoPoint = std::numeric_limits<size_t>::max();
+
+	double t_s = 0;  //!< time stamp of the scan (s)
+	mrpt::poses::CPose2D sensor_pose;  //!< sensor on the robot (2D part of the scan's sensorPose)
+	double max_range_m = 0;  //!< the scanner's "no echo" range
+	/** Per beam, in scan order: bearing in the robot frame (sensor yaw
+	 * included), measured range (as recorded, also for invalid beams),
+	 * direction cosines in the robot frame, and the one validity rule. */
+	std::vector<double> bearing_rad, range_m, cos_bearing, sin_bearing;
+	std::vector<bool> valid;
+	/** Valid returns as points (robot frame); beam_point[b] is the index of
+	 * beam b's point, or kNoPoint. */
+	TScanPoints points;
+	std::vector<size_t> beam_point;
+
+	size_t beamCount() const { return range_m.size(); }
+	/** Point at `range` along beam b, robot frame (also for invalid beams). */
+	mrpt::math::TPoint2D alongBeam(size_t b, double range) const
+	{
+		return {sensor_pose.x() + range * cos_bearing[b], sensor_pose.y() + range * sin_bearing[b]};
+	}
+	/** The valid points in the world frame for the robot at `robotPose`. */
+	std::vector<mrpt::math::TPoint2D> worldPoints(const mrpt::poses::CPose2D& robotPose) const;
+};
+
+/** The one rule for a usable return (see file comment). */
+bool isValidReturn(const mrpt::obs::CObservation2DRangeScan& scan, size_t beam);
+
+/** The record of `scan` (built once per scan by the pipeline). */
+TRangeData makeRangeData(const mrpt::obs::CObservation2DRangeScan& scan);
+
+}  // namespace hslam::common

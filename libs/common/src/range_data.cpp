@@ -1,0 +1,53 @@
+/* hslam: the range-data record of a scan (see range_data.h). */
+#include <hslam/common/range_data.h>
+
+#include <mrpt/system/datetime.h>
+
+namespace hslam::common
+{
+bool isValidReturn(const mrpt::obs::CObservation2DRangeScan& scan, size_t beam)
+{
+	if (!scan.getScanRangeValidity(beam)) return false;
+	const float r = scan.getScanRange(beam);
+	return std::isfinite(r) && r > 0 && r < scan.maxRange;
+}
+
+std::vector<mrpt::math::TPoint2D> TRangeData::worldPoints(const mrpt::poses::CPose2D& robotPose) const
+{
+	std::vector<mrpt::math::TPoint2D> out(points.size());
+	for (size_t i = 0; i < points.size(); ++i) robotPose.composePoint(points.xy[i], out[i]);
+	return out;
+}
+
+TRangeData makeRangeData(const mrpt::obs::CObservation2DRangeScan& scan)
+{
+	TRangeData d;
+	const size_t n = scan.getScanSize();
+	d.t_s = mrpt::Clock::toDouble(scan.timestamp);
+	d.sensor_pose = mrpt::poses::CPose2D(scan.sensorPose);
+	d.max_range_m = scan.maxRange;
+	if (n > 1) d.points.beam_step_rad = scan.aperture / static_cast<double>(n - 1);
+	d.bearing_rad.resize(n), d.range_m.resize(n), d.cos_bearing.resize(n), d.sin_bearing.resize(n);
+	d.valid.resize(n), d.beam_point.assign(n, TRangeData::kNoPoint);
+	d.points.xy.reserve(n), d.points.range_m.reserve(n), d.points.beam.reserve(n);
+	for (size_t b = 0; b < n; ++b)
+	{
+		const double a = scan.getScanAngle(b);  // sensor frame
+		d.bearing_rad[b] = d.sensor_pose.phi() + a;
+		d.cos_bearing[b] = std::cos(d.bearing_rad[b]);
+		d.sin_bearing[b] = std::sin(d.bearing_rad[b]);
+		d.range_m[b] = scan.getScanRange(b);
+		d.valid[b] = isValidReturn(scan, b);
+		if (!d.valid[b]) continue;
+		const double r = d.range_m[b];
+		mrpt::math::TPoint2D p;
+		d.sensor_pose.composePoint(r * std::cos(a), r * std::sin(a), p.x, p.y);
+		d.beam_point[b] = d.points.xy.size();
+		d.points.xy.push_back(p);
+		d.points.range_m.push_back(r);
+		d.points.beam.push_back(b);
+	}
+	return d;
+}
+
+}  // namespace hslam::common

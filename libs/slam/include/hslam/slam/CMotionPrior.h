@@ -1,0 +1,111 @@
+/* hslam: what the front-end believes about the motion between two scans
+ * before matching (issue 12, "laser only" and "odometry gap" classes).
+ *
+ * Odometry is trusted only while it behaves like odometry:
+ *  - unknown  (a gap marker, no odometry at all): constant-velocity prior;
+ *  - frozen   (frozen_min_scans consecutive increments of exactly zero,
+ *             i.e. wheel readings that stopped changing: a stalled driver or
+ *             a log without odometry but with constant readings): the robot
+ *             may be moving, so the same constant-velocity prior is used; a
+ *             robot that really stands still is then found still by matching;
+ *  - stalled  (over the last disagreement_window_s the estimate moved at
+ *             least disagreement_min_motion_m but odometry less than
+ *             disagreement_ratio of that, or the same in rotation:
+ *             "wheel readings nearly constant" without being exactly so);
+ *  - jump     (an increment faster than max_speed_mps / max_turn_rate_rad_s
+ *             over the scan interval: readings resuming after a stall with
+ *             the motion of the whole stall, a wrap, a reset): unknown too.
+ * The constant-velocity prior uses the velocity of the last two estimated
+ * poses (velocity()), with a standard deviation growing with the interval,
+ * so matching against the map carries the robot alone (laser-only logs).
+ * After any unreliable stretch the next match is a recovery (wider search). */
+#pragma once
+
+#include <hslam/slam/COdometryTracker.h>
+
+#include <Eigen/Core>
+#include <mrpt/poses/CPose2D.h>
+
+#include <deque>
+#include <string>
+
+namespace hslam::slam
+{
+struct TMotionPrior
+{
+	mrpt::poses::CPose2D delta;  //!< predicted motion since the previous scan (its robot frame)
+	Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();  //!< only for non-odometry sources
+	enum class ESource
+	{
+		odometry,
+		constant_velocity
+	} source = ESource::odometry;
+	std::string reason;  //!< "", "gap", "frozen", "stalled", "jump"
+};
+
+class CMotionPrior
+{
+   public:
+	struct TOptions
+	{
+		int frozen_min_scans = 3;  //!< zero increments in a row before odometry counts as frozen
+		double max_speed_mps = 3.0;  //!< faster increments are jumps (P3-DX: 1.2 m/s)
+		double max_turn_rate_rad_s = 300.0 * M_PI / 180.0;  //!< faster turns are jumps
+		double cv_xy_std_m = 0.1;  //!< constant-velocity prior: std floor (m)...
+		double cv_xy_std_mps = 0.5;  //!< ...plus this per second of interval (acceleration)
+		double cv_theta_std_rad = 5.0 * M_PI / 180.0;  //!< std floor (rad)...
+		double cv_theta_std_rad_s = 30.0 * M_PI / 180.0;  //!< ...plus this per second
+		double disagreement_window_s = 3.0;  //!< see file comment ("stalled")
+		double disagreement_min_motion_m = 0.3;
+		double disagreement_min_rotation_rad = 20.0 * M_PI / 180.0;
+		double disagreement_ratio = 0.25;
+
+		template <class V>
+		void visit(V& v)
+		{
+			v.integer("frozen_min_scans", frozen_min_scans, 1, 1000);
+			v.real("max_speed_mps", max_speed_mps, 0.1, 100.0);
+			v.degrees("max_turn_rate_deg_s", max_turn_rate_rad_s, 1.0, 10000.0);
+			v.real("cv_xy_std_m", cv_xy_std_m, 0.0, 10.0);
+			v.real("cv_xy_std_mps", cv_xy_std_mps, 0.0, 10.0);
+			v.degrees("cv_theta_std_deg", cv_theta_std_rad, 0.0, 180.0);
+			v.degrees("cv_theta_std_deg_s", cv_theta_std_rad_s, 0.0, 1000.0);
+			v.real("disagreement_window_s", disagreement_window_s, 0.1, 1000.0);
+			v.real("disagreement_min_motion_m", disagreement_min_motion_m, 0.01, 100.0);
+			v.degrees("disagreement_min_rotation_deg", disagreement_min_rotation_rad, 1.0, 3600.0);
+			v.real("disagreement_ratio", disagreement_ratio, 0.0, 1.0);
+		}
+	};
+
+	CMotionPrior() : CMotionPrior(TOptions()) {}
+	explicit CMotionPrior(const TOptions& options) : m_options(options) {}
+	const TOptions& options() const { return m_options; }
+
+	/** The prior for the interval ending at a scan at `t_s`. */
+	TMotionPrior prior(const TOdometryIncrement& increment, double t_s);
+	/** The estimated pose at the scan at `t_s` (feeds the velocity). */
+	void observePose(const mrpt::poses::CPose2D& pose, double t_s);
+	/** Robot-frame velocity (m/s, m/s, rad/s) from the last two estimates. */
+	Eigen::Vector3d velocity() const { return m_velocity; }
+
+   private:
+	TMotionPrior constantVelocity(double dt_s, const std::string& reason) const;
+	bool isJump(const mrpt::poses::CPose2D& delta, double dt_s) const;
+	bool odometryStalled() const;
+
+	struct TIntervalMotion
+	{
+		double t_s, odometry_m, odometry_rad, estimate_m, estimate_rad;
+	};
+	std::deque<TIntervalMotion> m_recent;  //!< intervals within disagreement_window_s
+	mrpt::poses::CPose2D m_lastOdometry;  //!< odometry of the latest interval (zero if unknown)
+
+	TOptions m_options;
+	int m_zeroIncrements = 0;
+	double m_lastScan_s = 0, m_lastPose_s = 0;
+	bool m_haveScan = false, m_havePose = false;
+	mrpt::poses::CPose2D m_lastPose;
+	Eigen::Vector3d m_velocity = Eigen::Vector3d::Zero();
+};
+
+}  // namespace hslam::slam

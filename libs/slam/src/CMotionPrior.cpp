@@ -1,0 +1,74 @@
+/* hslam: the motion prior of the front-end (see CMotionPrior.h). */
+#include <hslam/slam/CMotionPrior.h>
+
+#include <mrpt/math/wrap2pi.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace hslam::slam
+{
+TMotionPrior CMotionPrior::constantVelocity(double dt_s, const std::string& reason) const
+{
+	TMotionPrior p;
+	p.source = TMotionPrior::ESource::constant_velocity;
+	p.reason = reason;
+	p.delta = mrpt::poses::CPose2D(m_velocity.x() * dt_s, m_velocity.y() * dt_s, m_velocity.z() * dt_s);
+	const double sxy = m_options.cv_xy_std_m + m_options.cv_xy_std_mps * dt_s;
+	const double sth = m_options.cv_theta_std_rad + m_options.cv_theta_std_rad_s * dt_s;
+	p.covariance = Eigen::Vector3d(sxy * sxy, sxy * sxy, sth * sth).asDiagonal();
+	return p;
+}
+
+bool CMotionPrior::isJump(const mrpt::poses::CPose2D& delta, double dt_s) const
+{
+	if (dt_s <= 0) return false;  // no usable interval: nothing to compare with
+	return delta.norm() > m_options.max_speed_mps * dt_s ||
+		   std::abs(delta.phi()) > m_options.max_turn_rate_rad_s * dt_s;
+}
+
+TMotionPrior CMotionPrior::prior(const TOdometryIncrement& increment, double t_s)
+{
+	const double dt = m_haveScan ? std::clamp(t_s - m_lastScan_s, 0.0, 10.0) : 0.0;
+	m_lastScan_s = t_s, m_haveScan = true;
+	m_lastOdometry = increment.known ? increment.delta : mrpt::poses::CPose2D();
+	if (!increment.known)
+	{
+		m_zeroIncrements = 0;
+		return constantVelocity(dt, "gap");
+	}
+	const bool zero = increment.delta.norm() == 0 && increment.delta.phi() == 0;
+	m_zeroIncrements = zero ? m_zeroIncrements + 1 : 0;
+	if (m_zeroIncrements >= m_options.frozen_min_scans) return constantVelocity(dt, "frozen");
+	if (isJump(increment.delta, dt)) return constantVelocity(dt, "jump");
+	if (odometryStalled()) return constantVelocity(dt, "stalled");
+	TMotionPrior p;
+	p.delta = increment.delta;
+	return p;
+}
+
+bool CMotionPrior::odometryStalled() const
+{
+	double odo_m = 0, odo_rad = 0, est_m = 0, est_rad = 0;
+	for (const auto& i : m_recent)
+		odo_m += i.odometry_m, odo_rad += i.odometry_rad, est_m += i.estimate_m, est_rad += i.estimate_rad;
+	const double k = m_options.disagreement_ratio;
+	return (est_m >= m_options.disagreement_min_motion_m && odo_m < k * est_m) ||
+		   (est_rad >= m_options.disagreement_min_rotation_rad && odo_rad < k * est_rad);
+}
+
+void CMotionPrior::observePose(const mrpt::poses::CPose2D& pose, double t_s)
+{
+	if (m_havePose && t_s > m_lastPose_s)
+	{
+		const double dt = t_s - m_lastPose_s;
+		const mrpt::poses::CPose2D d = pose - m_lastPose;  // in the previous robot frame
+		m_velocity = Eigen::Vector3d(d.x() / dt, d.y() / dt, mrpt::math::wrapToPi(d.phi()) / dt);
+		m_recent.push_back({t_s, m_lastOdometry.norm(), std::abs(m_lastOdometry.phi()), d.norm(),
+							std::abs(mrpt::math::wrapToPi(d.phi()))});
+		while (!m_recent.empty() && m_recent.front().t_s < t_s - m_options.disagreement_window_s) m_recent.pop_front();
+	}
+	m_lastPose = pose, m_lastPose_s = t_s, m_havePose = true;
+}
+
+}  // namespace hslam::slam
