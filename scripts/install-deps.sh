@@ -8,7 +8,7 @@ packages=(
   libmrpt-dev mrpt-apps mrpt-common   # MRPT 2.5: libraries, rawlog-edit/icp-slam, sample datasets
   libopencv-dev libeigen3-dev zlib1g-dev
   libgtest-dev libbenchmark-dev
-  python3                             # scripts/compare-carmen.sh (rawlog rewriting for rbpf-slam)
+  python3                             # scripts/compare_slam.py and its test (standard library only)
 )
 
 missing=()

@@ -1,5 +1,6 @@
-/* hslam-carmen2rawlog: converts a CARMEN log (plain or .gz) into an
- * observations-only MRPT rawlog plus a TUM file of reference poses.
+/* hslam-carmen2rawlog: converts a CARMEN log (plain or .gz) into an MRPT
+ * rawlog (observations only, or actions + sensory frames with --format
+ * frames) plus a TUM file of reference poses.
  * All the work is in hslam::io::convertCarmenLog (libs/io). */
 #include <hslam/common/command_line.h>
 #include <hslam/common/options_io.h>
@@ -15,13 +16,14 @@ namespace
 {
 /** Command-line values go through the options' own checks (range, choices). */
 hslam::io::TCarmenImportOptions optionsFrom(bool lenient, const std::string& clock, const std::string& period,
-											const std::string& maxRange)
+											const std::string& maxRange, const std::string& format)
 {
 	mrpt::config::CConfigFileMemory cfg;
 	cfg.write("carmen_import", "lenient", lenient ? "true" : "false");
 	cfg.write("carmen_import", "clock", clock);
 	cfg.write("carmen_import", "synthetic_period_s", period);
 	cfg.write("carmen_import", "max_range_m", maxRange);
+	cfg.write("carmen_import", "format", format);
 	hslam::io::TCarmenImportOptions options;
 	hslam::common::loadOptions(options, cfg, "carmen_import");
 	return options;
@@ -44,10 +46,15 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<std::string> period("", "synthetic-period", "Synthetic clock period (s)", false, "1.0", "S", cmd);
 		TCLAP::ValueArg<std::string> maxRange("", "max-range",
 											  "No-return range (m); default: derived from the log", false, "0", "M", cmd);
+		TCLAP::ValueArg<std::string> format("", "format",
+											"Rawlog format: observations (observations only) | frames (actions + "
+											"sensory frames, for MRPT's rbpf-slam)",
+											false, "observations", "FORMAT", cmd);
 		// MRPT's TCLAP returns false (after printing) for --help/--version and for bad arguments.
 		if (!cmd.parse(argc, argv)) return hslam::common::exitCodeAfterParseStop(argc, argv);
 
-		const auto options = optionsFrom(lenient.getValue(), clock.getValue(), period.getValue(), maxRange.getValue());
+		const auto options = optionsFrom(lenient.getValue(), clock.getValue(), period.getValue(), maxRange.getValue(),
+									  format.getValue());
 		const auto report =
 			hslam::io::convertCarmenLog(input.getValue(), output.getValue(), reference.getValue(), options);
 		std::cout << hslam::io::formatCarmenImportReport(report);

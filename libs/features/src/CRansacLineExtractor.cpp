@@ -3,36 +3,18 @@
 #include <hslam/features/scan_points.h>
 #include <hslam/features/segment_ops.h>
 
+#include "ransac_lines.h"
+
 #include <mrpt/math/CVectorDynamic.h>
 #include <mrpt/math/TLine2D.h>
-#include <mrpt/math/ransac_applications.h>
 
 #include <algorithm>
 #include <cmath>
-#include <iostream>
-#include <optional>
 
 namespace hslam::features
 {
 namespace
 {
-/** Redirects std::cout to nothing for its lifetime (RAII). */
-class CSilencedStdout
-{
-   public:
-	CSilencedStdout() : m_saved(std::cout.rdbuf(nullptr)) {}
-	~CSilencedStdout()
-	{
-		std::cout.rdbuf(m_saved);
-		std::cout.clear();
-	}
-	CSilencedStdout(const CSilencedStdout&) = delete;
-	CSilencedStdout& operator=(const CSilencedStdout&) = delete;
-
-   private:
-	std::streambuf* m_saved;
-};
-
 /** Cuts the (beam-ordered) indices where consecutive points are more than max_gap_m apart. */
 std::vector<std::vector<size_t>> cutAtGaps(const TScanPoints& points, const std::vector<size_t>& indices,
 										   double max_gap_m)
@@ -61,15 +43,11 @@ TLineSegmentList CRansacLineExtractor::extract(const common::TRangeData& scan) c
 		xs[i] = points.xy[i].x;
 		ys[i] = points.xy[i].y;
 	}
-	std::vector<std::pair<size_t, mrpt::math::TLine2D>> lines;
-	{
-		// MRPT 2.5 logs "Finished in N iterations" at INFO level to std::cout
-		// on every internal RANSAC run, with no way to lower its verbosity.
-		std::optional<CSilencedStdout> quiet;
-		if (m_options.silence_mrpt_log) quiet.emplace();
-		mrpt::math::ransac_detect_2D_lines(xs, ys, lines, m_options.distance_threshold_m,
-										   static_cast<size_t>(m_options.min_inliers));
-	}
+	// MRPT's RANSAC logger prints "Finished in N iterations" at LVL_INFO for
+	// every line it looks for; silence_mrpt_log lowers its verbosity to errors.
+	const auto lines = detail::detectRansacLines(
+		xs, ys, m_options.distance_threshold_m, static_cast<size_t>(m_options.min_inliers),
+		m_options.silence_mrpt_log ? mrpt::system::LVL_ERROR : mrpt::system::LVL_INFO);
 
 	// each point goes to the nearest detected line within the threshold
 	// (MRPT hands points to the first line that claims them, which gives a

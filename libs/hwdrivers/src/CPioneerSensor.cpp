@@ -9,13 +9,20 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <string_view>
 
 IMPLEMENTS_GENERIC_SENSOR(CPioneerSensor, hslam::hwdrivers)
 
 namespace hslam::hwdrivers
 {
-CPioneerSensor::CPioneerSensor()
+CPioneerSensor::CPioneerSensor() : mrpt::system::COutputLogger("CPioneerSensor")
 {
+	// COutputLogger prints INFO/WARN to std::cout, which is block-buffered when
+	// rawlog-grabber's console goes to a file: link events would show up late.
+	// They go to std::cerr (unbuffered) through a logger callback instead.
+	logging_enable_console_output = false;
+	logRegisterCallback([](std::string_view msg, mrpt::system::VerbosityLevel, std::string_view name,
+						   mrpt::Clock::time_point) { std::cerr << "[" << name << "] " << msg << std::endl; });
 	m_sensorLabel = "PIONEER";
 	setOptions(TOptions());
 }
@@ -55,7 +62,7 @@ void CPioneerSensor::initialize()
 {
 	if (m_opts.teleop_udp_port > 0) m_teleop = std::make_unique<CUdpVelocityReceiver>(m_opts.teleop_udp_port);
 	if (!m_driver->connect())
-		std::cerr << "[CPioneerSensor] connection failed (will retry): " << m_driver->stats().lastError << "\n";
+		MRPT_LOG_WARN_STREAM("connection failed (will retry): " << m_driver->stats().lastError);
 	m_state = ssWorking;
 }
 
@@ -74,7 +81,10 @@ void CPioneerSensor::doProcess()
 		const std::string msg = connected ? "link up: " + s.robotName + " " + s.robotClass + " " + s.robotSubclass +
 												" (connection #" + std::to_string(s.connections) + ")"
 										  : "link down: " + s.lastError;
-		std::cerr << "[CPioneerSensor] " << msg << "\n";
+		if (connected)
+			MRPT_LOG_INFO(msg);
+		else
+			MRPT_LOG_WARN(msg);
 		emitComment(msg, mrpt::Clock::now());
 		m_wasConnected = connected;
 	}

@@ -28,8 +28,8 @@ mrpt::math::TPose2D referencePoseOf(const TCarmenLaser& laser)
 }  // namespace
 
 CCarmenConverter::CCarmenConverter(const TCarmenClock& clock, const TCarmenRangeLimits& limits,
-								   const TCarmenLaserMounts& mounts, CRawlogObservationWriter& writer)
-	: m_clock(clock), m_limits(limits), m_mounts(mounts), m_writer(writer)
+								   const TCarmenLaserMounts& mounts, detail::CCarmenRawlogSink& sink)
+	: m_clock(clock), m_limits(limits), m_mounts(mounts), m_sink(sink)
 {
 }
 
@@ -76,7 +76,7 @@ void CCarmenConverter::writeOdometryOrGap(const TCarmenOdometryStep& step, size_
 {
 	if (step.first || step.incrementKnown)
 	{
-		m_writer.write(*makeCarmenOdometry(step, t_s));
+		m_sink.odometry(step, t_s);
 		++m_odometry;
 		return;
 	}
@@ -85,7 +85,7 @@ void CCarmenConverter::writeOdometryOrGap(const TCarmenOdometryStep& step, size_
 							 std::to_string(m_front) + " (lines " + std::to_string(m_previousFrontLine) + " and " +
 							 std::to_string(line) + "): no ODOMETRY observation for scan " + std::to_string(m_front) +
 							 "; do not difference odometry across this gap";
-	m_writer.write(*makeComment("ODOMETRY_GAP", text, t_s));
+	m_sink.gap(makeComment("ODOMETRY_GAP", text, t_s));
 }
 
 void CCarmenConverter::writeScan(const TCarmenLaser& laser, double t_s)
@@ -93,7 +93,7 @@ void CCarmenConverter::writeScan(const TCarmenLaser& laser, double t_s)
 	const TCarmenScanGeometry geometry = carmenScanGeometry(laser);
 	if (geometry.warning) warnOnce(*geometry.warning);
 	const auto sensorPose = carmenSensorPose(laser, m_mounts, geometry);
-	m_writer.write(*makeCarmenScan(laser, geometry, sensorPose, m_limits, t_s));
+	m_sink.write(makeCarmenScan(laser, geometry, sensorPose, m_limits, t_s));
 }
 
 void CCarmenConverter::warnOnce(const std::string& warning)

@@ -4,12 +4,13 @@
 
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/io/CCarmenOdometryTracker.h>
-#include <hslam/io/CRawlogObservationWriter.h>
 #include <hslam/io/carmen_clock.h>
 #include <hslam/io/carmen_import.h>
 #include <hslam/io/carmen_log.h>
 #include <hslam/io/carmen_range_limits.h>
 #include <hslam/io/carmen_scan_geometry.h>
+
+#include "carmen_rawlog_sink.h"
 
 #include <string>
 #include <vector>
@@ -20,7 +21,7 @@ class CCarmenConverter
 {
    public:
 	CCarmenConverter(const TCarmenClock& clock, const TCarmenRangeLimits& limits, const TCarmenLaserMounts& mounts,
-					 CRawlogObservationWriter& writer);
+					 detail::CCarmenRawlogSink& sink);
 
 	/** Handles one message (lasers and ODOM; PARAMs were read in the first pass). */
 	void add(const TCarmenLogEntry& entry);
@@ -41,7 +42,7 @@ class CCarmenConverter
 	const TCarmenClock& m_clock;
 	const TCarmenRangeLimits& m_limits;
 	TCarmenLaserMounts m_mounts;
-	CRawlogObservationWriter& m_writer;
+	detail::CCarmenRawlogSink& m_sink;
 	CCarmenOdometryTracker m_tracker;
 	hslam::common::TTrajectory2D m_reference;
 	size_t m_scanIndex = 0;  //!< index into m_clock.t_s

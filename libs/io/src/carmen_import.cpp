@@ -76,6 +76,7 @@ std::string headerText(const TCarmenImportReport& r, const TScanStatistics& stat
 {
 	return "CARMEN_IMPORT: CARMEN log imported by hslam::io::convertCarmenLog\n"
 		   "source: " + r.inputFile + "\n"
+		   "rawlog format: " + r.rawlogFormat + "\n"
 		   "clock: " + r.clockUsed + " (" + r.clockReason + ")\n"
 		   "ranges: maxRange " + formatNumber(r.maxRange_m) + " m; " + r.rangeLimitsReason + "\n"
 		   "messages parsed: " + countsText(r.parsedMessages) + "; skipped: " + countsText(r.skippedMessages) +
@@ -121,23 +122,24 @@ void writeTumKeepingFirstError(const std::string& path, const hslam::common::TTr
 
 /** Second pass; on any error closes the outputs with what was converted and rethrows. */
 void convertEntries(const TCarmenLog& log, const TScanStatistics& stats, const TCarmenClock& clock,
-					const TCarmenRangeLimits& limits, const TCarmenLaserMounts& mounts, TCarmenImportReport& report)
+					const TCarmenRangeLimits& limits, const TCarmenLaserMounts& mounts, const std::string& format,
+					TCarmenImportReport& report)
 {
-	CRawlogObservationWriter writer(report.rawlogFile);
-	CCarmenConverter converter(clock, limits, mounts, writer);
+	const auto sink = detail::makeCarmenRawlogSink(format, report.rawlogFile);
+	CCarmenConverter converter(clock, limits, mounts, *sink);
 	try
 	{
 		const double headerTime_s = clock.t_s.empty() ? 0.0 : clock.t_s.front();
-		writer.write(*makeComment("CARMEN_IMPORT", headerText(report, stats), headerTime_s));
+		sink->write(makeComment("CARMEN_IMPORT", headerText(report, stats), headerTime_s));
 		for (const auto& entry : log.entries) converter.add(entry);
 	}
 	catch (const std::exception& e)
 	{
-		writer.close();
+		sink->close();
 		writeTumKeepingFirstError(report.tumFile, converter.reference());
 		throw std::runtime_error(std::string(e.what()) + " (" + writtenSoFar(converter, report.rawlogFile, report.tumFile) + ")");
 	}
-	writer.close();
+	sink->close();
 	hslam::common::writeTumFile(report.tumFile, converter.reference());
 	converter.fillReport(report);
 	if (log.fatalError)
@@ -151,6 +153,7 @@ TCarmenImportReport convertCarmenLog(const std::string& inputLog, const std::str
 	checkOptions(options);
 	const TCarmenLog log = readCarmenLog(inputLog, options.lenient);
 	TCarmenImportReport report = reportFromLog(log, outRawlog, outTum);
+	report.rawlogFormat = options.format;
 	const TScanStatistics stats = scanStatistics(log);
 
 	const TCarmenClock clock = selectCarmenClock(stats.stamps, options.clock, options.synthetic_period_s);
@@ -166,7 +169,7 @@ TCarmenImportReport convertCarmenLog(const std::string& inputLog, const std::str
 	const TCarmenLaserMounts mounts = carmenLaserMounts(log.params, log.path);
 	noteLaserOffsets(mounts, report.warnings);
 
-	convertEntries(log, stats, clock, limits, mounts, report);
+	convertEntries(log, stats, clock, limits, mounts, options.format, report);
 	return report;
 }
 

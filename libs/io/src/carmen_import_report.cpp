@@ -22,7 +22,7 @@ std::string formatCarmenImportReport(const TCarmenImportReport& r)
 {
 	std::ostringstream os;
 	os << "input:  " << r.inputFile << "\n"
-	   << "output: " << r.rawlogFile << " (rawlog), " << r.tumFile << " (TUM reference)\n";
+	   << "output: " << r.rawlogFile << " (rawlog, " << r.rawlogFormat << "), " << r.tumFile << " (TUM reference)\n";
 	printCounts(os, "messages parsed", r.parsedMessages);
 	printCounts(os, "messages skipped", r.skippedMessages);
 	os << "malformed lines skipped: " << r.malformedLinesSkipped << "\n";

@@ -1,4 +1,4 @@
-/* hslam: RANSAC line extraction by MRPT (mrpt::math::ransac_detect_2D_lines),
+/* hslam: RANSAC line extraction by MRPT (RANSAC_Template, as mrpt::math::ransac_detect_2D_lines),
  * the second comparison method of thesis 4.4.3 iii (table 3; thesis
  * settings: inlier distance 50 mm, >= 5 inliers).
  *
@@ -31,9 +31,8 @@ class CRansacLineExtractor : public CLineExtractor
 		double max_point_gap_m = 0.5;  //!< consecutive inliers farther apart split a segment
 		int min_points = 5;
 		double min_length_m = 0.2;
-		/** MRPT 2.5's ransac_detect_2D_lines prints one INFO line per call to
-		 * std::cout; if set, std::cout is detached during the call (do not
-		 * write to std::cout from another thread meanwhile). */
+		/** MRPT's RANSAC (a COutputLogger) prints one INFO line per line it
+		 * looks for; if set, its verbosity is LVL_ERROR (nothing else is touched). */
 		bool silence_mrpt_log = true;
 
 		template <class V>

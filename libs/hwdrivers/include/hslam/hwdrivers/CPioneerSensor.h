@@ -23,12 +23,15 @@
 #include <hslam/hwdrivers/CUdpVelocityReceiver.h>
 #include <hslam/hwdrivers/p3dx_geometry.h>
 #include <mrpt/hwdrivers/CGenericSensor.h>
+#include <mrpt/system/COutputLogger.h>
 
 #include <memory>
 
 namespace hslam::hwdrivers
 {
-class CPioneerSensor : public mrpt::hwdrivers::CGenericSensor
+/** Logs through MRPT's COutputLogger, as MRPT's own sensors do
+ * (C2DRangeFinderAbstract): link up/down and failed connections. */
+class CPioneerSensor : public mrpt::system::COutputLogger, public mrpt::hwdrivers::CGenericSensor
 {
 	DEFINE_GENERIC_SENSOR(CPioneerSensor)
 

@@ -12,6 +12,13 @@
  * difference odometry across an ODOMETRY_GAP. MRPT 2.5 does not serialize
  * the sensorLabel of a CObservationComment, so comment texts also start with
  * their label ("CARMEN_IMPORT: ...", "ODOMETRY_GAP: ...").
+ * With format = frames (CRawlogFramesWriter.h) the same content is written
+ * as actions + sensory frames, one frame per front scan: the action is the
+ * raw odometry increment since the previous front scan as MRPT's
+ * CActionRobotMovement2D (MRPT's default motion model; identity for the first
+ * scan), and at an ODOMETRY_GAP the action collection is EMPTY and the gap
+ * comment is in the frame; the header comment and rear/raw scans go in the
+ * frame of the front scan they follow (the first frame for those before it).
  * Output TUM: one line per front scan, its reference pose (FLASER x,y,theta;
  * ROBOTLASER robot pose) with the same timestamp as the scan in the rawlog.
  *
@@ -22,6 +29,7 @@
  * clock              = auto   ; auto | ipc | logger | synthetic (carmen_clock.h)
  * synthetic_period_s = 1.0    ; period of the synthetic clock, seconds
  * max_range_m        = 0      ; > 0 overrides the no-return value derived from the log
+ * format             = observations ; observations | frames (actions + sensory frames)
  * \endcode */
 #pragma once
 
@@ -39,6 +47,7 @@ struct TCarmenImportOptions
 	std::string clock = "auto";
 	double synthetic_period_s = 1.0;
 	double max_range_m = 0;  //!< 0: derive from the log (carmen_range_limits.h)
+	std::string format = "observations";  //!< rawlog format: observations | frames
 
 	template <class V>
 	void visit(V& v)
@@ -47,12 +56,14 @@ struct TCarmenImportOptions
 		v.choice("clock", clock, {"auto", "ipc", "logger", "synthetic"});
 		v.real("synthetic_period_s", synthetic_period_s, 1e-6, 3600.0);
 		v.real("max_range_m", max_range_m, 0.0, 1000.0);
+		v.choice("format", format, {"observations", "frames"});
 	}
 };
 
 struct TCarmenImportReport
 {
 	std::string inputFile, rawlogFile, tumFile;
+	std::string rawlogFormat;  //!< observations | frames
 	std::map<std::string, size_t> parsedMessages;  //!< per message name
 	std::map<std::string, size_t> skippedMessages;  //!< per message name ("#" = comments)
 	size_t malformedLinesSkipped = 0;
