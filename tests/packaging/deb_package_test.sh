@@ -37,14 +37,14 @@ awk '/^\[LASER\]/{skip=1} /^\[/{if ($0 != "[LASER]") skip=0} !skip' \
   "$root/usr/share/hslam/config_ini/grabber-pioneer-lms200.ini" |
   sed -e "s|^rawlog_prefix = .*|rawlog_prefix = $work/rec|" -e "s|^COM_port_LIN = .*|COM_port_LIN = $work/pioneer|" \
       -e "s|^GRABBER_PERIOD_MS = .*|GRABBER_PERIOD_MS = 200|" > "$ini"
-if (echo q | rawlog-grabber "$ini" > "$work/noplugin.log" 2>&1); then fail "rawlog-grabber ran without the plug-in"; fi
-grep -qiE "CPioneerSensor|not recognized" "$work/noplugin.log" || fail "no unknown-class error without the plug-in"
+(echo q | timeout 60 rawlog-grabber "$ini" > "$work/noplugin.log" 2>&1) || true
+grep -qiE "not recognized|unknown" "$work/noplugin.log" || { cat "$work/noplugin.log"; fail "no unknown-class error without the plug-in"; }
 # ... and records our unpacked emulator with it.
 "$bin/hslam-device-emulator" --pioneer-pty "$work/pioneer" --duration 15 > "$work/emulator.log" 2>&1 &
 emulator=$!
 trap 'kill $emulator 2>/dev/null || true' EXIT
 for _ in $(seq 50); do [ -e "$work/pioneer" ] && break; sleep 0.1; done
-(sleep 4; echo q) | rawlog-grabber -p "$lib/libhslam-hwdrivers-plugin.so" "$ini" > "$work/grabber.log" 2>&1 ||
+(sleep 4; echo q) | timeout 60 rawlog-grabber -p "$lib/libhslam-hwdrivers-plugin.so" "$ini" > "$work/grabber.log" 2>&1 ||
   { cat "$work/grabber.log"; fail "rawlog-grabber -p"; }
 rawlog=$(ls "$work"/rec_*.rawlog | head -1)
 rawlog-edit --info -i "$rawlog" > "$work/info.txt" 2>&1 || { cat "$work/info.txt"; fail "rawlog-edit --info"; }
