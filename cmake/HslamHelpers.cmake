@@ -101,9 +101,10 @@ function(hslam_add_man_page app)
   set(_man ${CMAKE_BINARY_DIR}/man/${app}.1)
   add_custom_command(OUTPUT ${_man}
     COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_BINARY_DIR}/man
-    COMMAND ${HSLAM_HELP2MAN} --no-info --no-discard-stderr
-            --version-string=${PROJECT_VERSION} --name=${app}
-            --output=${_man} $<TARGET_FILE:${app}>
+    # Run by name from PATH: the usage line shows "hslam-x", not the build path.
+    COMMAND ${CMAKE_COMMAND} -E env "PATH=$<TARGET_FILE_DIR:${app}>:$ENV{PATH}"
+            ${HSLAM_HELP2MAN} --no-info --no-discard-stderr
+            --version-string=${PROJECT_VERSION} --name=${app} --output=${_man} ${app}
     DEPENDS ${app}
     COMMENT "help2man ${app}" VERBATIM)
   add_custom_target(${app}-man ALL DEPENDS ${_man})
