@@ -1,5 +1,9 @@
 # Helpers shared by every hslam target: warnings, one precompiled header,
 # and one function per kind of target so library CMakeLists stay three lines.
+# Each function also installs what it creates (see docs/install.md):
+#   apps -> <prefix>/bin, libraries and plug-in modules -> <prefix>/lib,
+#   headers -> <prefix>/include/hslam/<lib>/, exported as hslam::<lib>.
+include(GNUInstallDirs)
 
 # Every target is compiled with the same flags (-fPIC included, also for
 # executables) so that all of them can reuse the one precompiled header.
@@ -25,25 +29,86 @@ function(hslam_add_pch_target)
   target_precompile_headers(hslam_pch PRIVATE ${PROJECT_SOURCE_DIR}/cmake/hslam_pch.h)
 endfunction()
 
+# Run-time search path of an installed target: the libraries are found in
+# <prefix>/lib relative to the binary, so a prefix can be moved (or unpacked
+# by dpkg -x) anywhere. The build tree keeps CMake's absolute build RPATH.
+function(hslam_set_install_rpath target from_dir)
+  file(RELATIVE_PATH _rel "/_p/${from_dir}" "/_p/${CMAKE_INSTALL_LIBDIR}")
+  if(_rel STREQUAL "")
+    set(_rel ".")
+  endif()
+  set_target_properties(${target} PROPERTIES INSTALL_RPATH "$ORIGIN/${_rel}")
+endfunction()
+
 # hslam_add_library(<name> DEPS <targets...>): libs/<name>/src/*.cpp with
 # public headers in libs/<name>/include/hslam/<name>/.
+# Shared (libhslam-<name>.so): apps, tests and the plug-in modules loaded by
+# MRPT's own tools then share one copy of each class, so MRPT's class and map
+# registries hold one CTiledOccupancyGridMap2D / CPioneerSensor per process.
 function(hslam_add_library name)
   cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
   file(GLOB srcs CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/src/*.cpp)
-  add_library(hslam_${name} STATIC ${srcs})
+  add_library(hslam_${name} SHARED ${srcs})
   add_library(hslam::${name} ALIAS hslam_${name})
-  target_include_directories(hslam_${name} PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/include)
+  set_target_properties(hslam_${name} PROPERTIES
+    OUTPUT_NAME hslam-${name} EXPORT_NAME ${name}
+    DEFINE_SYMBOL ""  # no -Dhslam_<name>_EXPORTS: same flags as every target (PCH, ccache)
+    VERSION ${PROJECT_VERSION} SOVERSION ${PROJECT_VERSION_MAJOR}.${PROJECT_VERSION_MINOR})
+  target_include_directories(hslam_${name} PUBLIC
+    $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   target_link_libraries(hslam_${name} PUBLIC ${ARG_DEPS})
   hslam_set_target_defaults(hslam_${name})
+  hslam_set_install_rpath(hslam_${name} ${CMAKE_INSTALL_LIBDIR})
+  install(TARGETS hslam_${name} EXPORT hslamTargets
+          LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+          RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/include/hslam/${name}
+          DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/hslam)
+  set_property(GLOBAL APPEND PROPERTY HSLAM_EXPORTED_TARGETS hslam::${name})
 endfunction()
 
-# hslam_add_app(<name> DEPS <targets...>): apps/<name>/*.cpp -> bin/<name>.
+# hslam_add_plugin_module(<target> <source> DEPS <targets...>): a module MRPT
+# tools load with -p (or LD_PRELOAD), installed next to the libraries.
+function(hslam_add_plugin_module target source)
+  cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
+  add_library(${target} MODULE ${source})
+  target_link_libraries(${target} PRIVATE ${ARG_DEPS})
+  hslam_set_target_defaults(${target})
+  hslam_set_install_rpath(${target} ${CMAKE_INSTALL_LIBDIR})
+  install(TARGETS ${target} LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+endfunction()
+
+# hslam_add_app(<name> DEPS <targets...>): apps/<name>/*.cpp -> bin/<name>,
+# installed to <prefix>/bin with a man page (help2man) when help2man exists.
 function(hslam_add_app name)
   cmake_parse_arguments(ARG "" "" "DEPS" ${ARGN})
   file(GLOB srcs CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/*.cpp)
   add_executable(${name} ${srcs})
   target_link_libraries(${name} PRIVATE ${ARG_DEPS} hslam_tclap)
   hslam_set_target_defaults(${name})
+  hslam_set_install_rpath(${name} ${CMAKE_INSTALL_BINDIR})
+  install(TARGETS ${name} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  hslam_add_man_page(${name})
+endfunction()
+
+# Man page generated from the app's --help text (Debian help2man).
+function(hslam_add_man_page app)
+  if(NOT HSLAM_HELP2MAN)
+    return()
+  endif()
+  set(_man ${CMAKE_BINARY_DIR}/man/${app}.1)
+  add_custom_command(OUTPUT ${_man}
+    COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_BINARY_DIR}/man
+    # Run by name from PATH: the usage line shows "hslam-x", not the build path.
+    COMMAND ${CMAKE_COMMAND} -E env "PATH=$<TARGET_FILE_DIR:${app}>:$ENV{PATH}"
+            ${HSLAM_HELP2MAN} --no-info --no-discard-stderr
+            --version-string=${PROJECT_VERSION} --name=${app} --output=${_man} ${app}
+    DEPENDS ${app}
+    COMMENT "help2man ${app}" VERBATIM)
+  add_custom_target(${app}-man ALL DEPENDS ${_man})
+  install(FILES ${_man} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 endfunction()
 
 # hslam_add_test(<lib> DEPS <targets...>): tests/<lib>/*_unittest.cpp -> one

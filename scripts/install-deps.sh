@@ -8,7 +8,11 @@ packages=(
   libmrpt-dev mrpt-apps mrpt-common   # MRPT 2.5: libraries, rawlog-edit/icp-slam, sample datasets
   libopencv-dev libeigen3-dev zlib1g-dev
   libgtest-dev libbenchmark-dev
-  python3                             # scripts/compare_slam.py and its test (standard library only)
+  python3                             # scripts/compare_slam.py and its test (standard library only), batch summary
+  chromium                            # tests/packaging: report.html in a real (headless) browser
+  help2man                            # man pages of the apps, generated from --help
+  parallel                            # scripts/batch-process.sh (falls back to xargs -P without it)
+  dpkg-dev file                       # cpack -G DEB: dpkg-shlibdeps computes Depends:
 )
 
 missing=()

@@ -12,5 +12,5 @@ out="${1:-results/default}"
 input="/usr/share/mrpt/datasets/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog"
 ./build/bin/hslam-process -c config_ini/hslam-default.ini -i "$input" -o "$out"
 echo
-echo "Done. Open $out/map.png (merged map, estimated path red, odometry orange) and $out/pose_plot.png;"
+echo "Done. Open $out/report.html (figures, maps, timing, warnings), $out/map.png (merged map, estimated path red, odometry orange) and $out/pose_plot.png;"
 echo "see $out/ for tiles/, map.gridmap.gz (MRPT), trajectory.tum, pose_estimates.csv, tracks.csv and timing.txt."

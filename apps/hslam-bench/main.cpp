@@ -10,6 +10,7 @@
  *   hslam-bench legs-sim [--data rawlog_samples] [--out DIR] [--config FILE]
  *   hslam-bench hwdrivers [--repetitions N]
  */
+#include <hslam/common/version.h>
 #include "bench_common.h"
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
@@ -18,7 +19,7 @@
 
 int main(int argc, char** argv)
 {
-	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers)", ' ', "0.1");
+	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers)", ' ', hslam::common::versionText());
 	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers",
 												true, "", "suite", cmd);
 	TCLAP::MultiArg<std::string> rawlogs("r", "rawlog",
@@ -26,11 +27,11 @@ int main(int argc, char** argv)
 										 false, "file", cmd);
 	TCLAP::ValueArg<int> repetitions("n", "repetitions", "timed runs per measurement, best kept (default 5)", false,
 									 5, "N", cmd);
-	TCLAP::ValueArg<std::string> data("", "data", "legs: folder laid out like ../shared/datasets/legs; legs-sim: folder of simulated samples", false,
+	TCLAP::ValueArg<std::string> data("", "data", "legs: folder laid out like ../shared/datasets/legs; legs-sim: folder of simulated samples (default: ../shared/datasets/legs)", false,
 									  "../shared/datasets/legs", "dir", cmd);
 	TCLAP::ValueArg<std::string> out("", "out", "folder for images written by a suite (default .)", false, ".",
 									 "dir", cmd);
-	TCLAP::ValueArg<std::string> config("c", "config", "legs suites: INI whose [dynamic_objects] overrides the suite's options",
+	TCLAP::ValueArg<std::string> config("c", "config", "legs suites: INI whose [dynamic_objects] overrides the suite's options (default: none)",
 										false, "", "file", cmd);
 	try
 	{

@@ -4,6 +4,7 @@
  * All the work is in hslam::io::convertCarmenLog (libs/io). */
 #include <hslam/common/command_line.h>
 #include <hslam/common/options_io.h>
+#include <hslam/common/version.h>
 #include <hslam/io/carmen_import.h>
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
@@ -34,16 +35,15 @@ int main(int argc, char** argv)
 {
 	try
 	{
-		TCLAP::CmdLine cmd("hslam-carmen2rawlog: CARMEN log -> MRPT rawlog (observations) + TUM reference poses", ' ',
-						   "0.1");
+		TCLAP::CmdLine cmd("hslam-carmen2rawlog: CARMEN log -> MRPT rawlog (observations) + TUM reference poses", ' ', hslam::common::versionText());
 		TCLAP::UnlabeledValueArg<std::string> input("input", "CARMEN log (.log or .log.gz)", true, "", "IN.log[.gz]", cmd);
 		TCLAP::UnlabeledValueArg<std::string> output("output", "Output rawlog (gz-compressed)", true, "", "OUT.rawlog", cmd);
-		TCLAP::ValueArg<std::string> reference("", "reference", "Output TUM file with the reference poses", true, "",
+		TCLAP::ValueArg<std::string> reference("", "reference", "Output TUM file with the reference poses (required)", true, "",
 											   "OUT.tum", cmd);
-		TCLAP::SwitchArg lenient("", "lenient", "Skip and count malformed lines instead of failing", cmd);
-		TCLAP::ValueArg<std::string> clock("", "clock", "Scan clock: auto|ipc|logger|synthetic", false, "auto", "CLOCK",
+		TCLAP::SwitchArg lenient("", "lenient", "Skip and count malformed lines instead of failing (default: off)", cmd);
+		TCLAP::ValueArg<std::string> clock("", "clock", "Scan clock: auto|ipc|logger|synthetic (default: auto)", false, "auto", "CLOCK",
 										   cmd);
-		TCLAP::ValueArg<std::string> period("", "synthetic-period", "Synthetic clock period (s)", false, "1.0", "S", cmd);
+		TCLAP::ValueArg<std::string> period("", "synthetic-period", "Synthetic clock period (s) (default: 1.0)", false, "1.0", "S", cmd);
 		TCLAP::ValueArg<std::string> maxRange("", "max-range",
 											  "No-return range (m); default: derived from the log", false, "0", "M", cmd);
 		TCLAP::ValueArg<std::string> format("", "format",

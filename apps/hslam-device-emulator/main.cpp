@@ -8,10 +8,11 @@
  * with --scene and --sim-ini the simulator's sonar model (specular echoes,
  * multipath) and laser noise too.
  * Runs until SIGINT/SIGTERM or --duration; --truth writes the true pose (TUM). */
+#include <hslam/common/options_io.h>
 #include <hslam/common/tum_trajectory.h>
+#include <hslam/common/version.h>
 #include <hslam/hwdrivers/CArcosEmulator.h>
 #include <hslam/hwdrivers/CLms200Emulator.h>
-#include <hslam/common/options_io.h>
 #include <hslam/sim/CDiffDriveRobot.h>
 #include <hslam/sim/CLaserSimulator.h>
 #include <hslam/sim/CSonarSimulator.h>
@@ -123,24 +124,24 @@ int main(int argc, char** argv)
 {
 	try
 	{
-		TCLAP::CmdLine cmd("hslam-device-emulator: Pioneer ARCOS + SICK LMS200 emulators on pseudo-terminals/TCP", ' ', "1.0");
-		TCLAP::ValueArg<std::string> scene("", "scene", "simulator scene file (config_ini/sim-worlds/*.scene)", false, "", "file", cmd);
-		TCLAP::ValueArg<std::string> box("", "box", "rectangular room 'xmin ymin xmax ymax' (m) if no --scene", false, "-2 -3 6 3", "text", cmd);
-		TCLAP::ValueArg<std::string> simIni("", "sim-ini", "simulator INI (config_ini/sim-*.ini): [robot] kinematics with UMBmark errors drive the robot; with --scene also the [sonar] model (cone, specular, multipath, noise) and [laser] noise. Default: error-free kinematics, one exact ray per sonar/beam", false, "", "file", cmd);
-		TCLAP::ValueArg<std::string> start("", "start", "true start pose 'x_m y_m yaw_deg'", false, "0 0 0", "text", cmd);
-		TCLAP::ValueArg<std::string> pioneerPty("", "pioneer-pty", "symlink for the Pioneer's pseudo-terminal ('' = none)", false, "", "path", cmd);
-		TCLAP::ValueArg<int> pioneerTcp("", "pioneer-tcp", "loopback TCP port for the Pioneer (-1 = none, 0 = any)", false, -1, "port", cmd);
-		TCLAP::ValueArg<std::string> lmsPty("", "lms200-pty", "symlink for the LMS200's pseudo-terminal ('' = none)", false, "", "path", cmd);
-		TCLAP::ValueArg<double> lmsRate("", "lms200-rate", "laser scans per second", false, 10.0, "Hz", cmd);
+		TCLAP::CmdLine cmd("hslam-device-emulator: Pioneer ARCOS + SICK LMS200 emulators on pseudo-terminals/TCP", ' ', hslam::common::versionText());
+		TCLAP::ValueArg<std::string> scene("", "scene", "simulator scene file (config_ini/sim-worlds/*.scene) (default: none)", false, "", "file", cmd);
+		TCLAP::ValueArg<std::string> box("", "box", "rectangular room 'xmin ymin xmax ymax' (m) if no --scene (default: -2 -3 6 3)", false, "-2 -3 6 3", "text", cmd);
+		TCLAP::ValueArg<std::string> simIni("", "sim-ini", "simulator INI (config_ini/sim-*.ini): [robot] kinematics with UMBmark errors drive the robot; with --scene also the [sonar] model (cone, specular, multipath, noise) and [laser] noise. Default: error-free kinematics, one exact ray per sonar/beam (default: none)", false, "", "file", cmd);
+		TCLAP::ValueArg<std::string> start("", "start", "true start pose 'x_m y_m yaw_deg' (default: 0 0 0)", false, "0 0 0", "text", cmd);
+		TCLAP::ValueArg<std::string> pioneerPty("", "pioneer-pty", "symlink for the Pioneer's pseudo-terminal ('' = none) (default: none)", false, "", "path", cmd);
+		TCLAP::ValueArg<int> pioneerTcp("", "pioneer-tcp", "loopback TCP port for the Pioneer (-1 = none, 0 = any) (default: -1)", false, -1, "port", cmd);
+		TCLAP::ValueArg<std::string> lmsPty("", "lms200-pty", "symlink for the LMS200's pseudo-terminal ('' = none) (default: none)", false, "", "path", cmd);
+		TCLAP::ValueArg<double> lmsRate("", "lms200-rate", "laser scans per second (default: 10.0)", false, 10.0, "Hz", cmd);
 		TCLAP::ValueArg<double> sipPeriod("", "sip-period", "SIP period (s), ARCOS default 0.1", false, 0.1, "s", cmd);
-		TCLAP::ValueArg<double> badCk("", "bad-checksum-rate", "fraction of SIPs sent with a bad checksum", false, 0, "0..1", cmd);
-		TCLAP::ValueArg<double> partial("", "partial-rate", "fraction of SIPs truncated", false, 0, "0..1", cmd);
-		TCLAP::ValueArg<double> garbage("", "garbage-rate", "fraction of SIPs preceded by garbage bytes", false, 0, "0..1", cmd);
-		TCLAP::ValueArg<double> dropEvery("", "drop-every", "pull the cable every N s: close TCP clients, re-create the pty (0 = never)", false, 0, "s", cmd);
-		TCLAP::ValueArg<double> silenceEvery("", "silence-every", "go silent every N s (0 = never)", false, 0, "s", cmd);
-		TCLAP::ValueArg<double> silenceFor("", "silence-for", "length of each silence (s)", false, 2.0, "s", cmd);
-		TCLAP::ValueArg<double> duration("", "duration", "stop after this many seconds (0 = on SIGINT/SIGTERM)", false, 0, "s", cmd);
-		TCLAP::ValueArg<std::string> truth("", "truth", "write the true robot pose at 20 Hz to this TUM file at exit", false, "", "file", cmd);
+		TCLAP::ValueArg<double> badCk("", "bad-checksum-rate", "fraction of SIPs sent with a bad checksum (default: 0)", false, 0, "0..1", cmd);
+		TCLAP::ValueArg<double> partial("", "partial-rate", "fraction of SIPs truncated (default: 0)", false, 0, "0..1", cmd);
+		TCLAP::ValueArg<double> garbage("", "garbage-rate", "fraction of SIPs preceded by garbage bytes (default: 0)", false, 0, "0..1", cmd);
+		TCLAP::ValueArg<double> dropEvery("", "drop-every", "pull the cable every N s: close TCP clients, re-create the pty (0 = never) (default: 0)", false, 0, "s", cmd);
+		TCLAP::ValueArg<double> silenceEvery("", "silence-every", "go silent every N s (0 = never) (default: 0)", false, 0, "s", cmd);
+		TCLAP::ValueArg<double> silenceFor("", "silence-for", "length of each silence (s) (default: 2.0)", false, 2.0, "s", cmd);
+		TCLAP::ValueArg<double> duration("", "duration", "stop after this many seconds (0 = on SIGINT/SIGTERM) (default: 0)", false, 0, "s", cmd);
+		TCLAP::ValueArg<std::string> truth("", "truth", "write the true robot pose at 20 Hz to this TUM file at exit (default: none)", false, "", "file", cmd);
 		if (!cmd.parse(argc, argv)) return 0;
 
 		std::shared_ptr<CEmulatorWorld> world;

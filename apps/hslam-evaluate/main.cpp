@@ -3,6 +3,7 @@
  * the figures to a file. Exit code 0 on success, 1 on any error. */
 #include <hslam/common/command_line.h>
 #include <hslam/common/parse_number.h>
+#include <hslam/common/version.h>
 #include <hslam/eval/evaluate_trajectory.h>
 #include <hslam/eval/evaluation_json.h>
 #include <hslam/eval/evaluation_table.h>
@@ -42,12 +43,12 @@ int main(int argc, char** argv)
 			"Evaluates an estimated trajectory against a reference (TUM files): poses are matched by "
 			"timestamp, ATE is computed after the best SE(2) alignment, RPE for consecutive poses and "
 			"for poses 1 m and 5 m of reference travel apart.",
-			' ', "hslam");
+			' ', hslam::common::versionText());
 		TCLAP::UnlabeledValueArg<std::string> referenceArg("reference", "Reference trajectory (TUM file)", true, "",
 														   "REFERENCE.tum", cmd);
 		TCLAP::UnlabeledValueArg<std::string> estimateArg("estimate", "Estimated trajectory (TUM file)", true, "",
 														  "ESTIMATE.tum", cmd);
-		TCLAP::ValueArg<std::string> jsonArg("", "json", "Also write the figures to this JSON file", false, "",
+		TCLAP::ValueArg<std::string> jsonArg("", "json", "Also write the figures to this JSON file (default: none)", false, "",
 											 "OUT.json", cmd);
 		TCLAP::ValueArg<std::string> maxDtArg("", "max-dt",
 											  "Largest timestamp difference (s) between matched poses (default " +

@@ -18,6 +18,7 @@
 #include "CSensorThread.h"
 
 #include <hslam/common/options_io.h>
+#include <hslam/common/version.h>
 #include <hslam/hwdrivers/CPioneerSensor.h>
 #include <hslam/slam/batch_outputs.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
@@ -84,19 +85,19 @@ int main(int argc, char** argv)
 {
 	try
 	{
-		TCLAP::CmdLine cmd("hslam-grabber: rawlog recorder reading rawlog-grabber INI files", ' ', "1.0");
+		TCLAP::CmdLine cmd("hslam-grabber: rawlog recorder reading rawlog-grabber INI files", ' ', hslam::common::versionText());
 		TCLAP::UnlabeledValueArg<std::string> ini("config", "rawlog-grabber INI file", true, "", "grab.ini", cmd);
-		TCLAP::ValueArg<std::string> plugins("p", "plugins", "comma-separated plug-in modules to load", false, "", "a.so,b.so", cmd);
+		TCLAP::ValueArg<std::string> plugins("p", "plugins", "comma-separated plug-in modules to load (default: none)", false, "", "a.so,b.so", cmd);
 		TCLAP::ValueArg<std::string> out("o", "out", "output rawlog (default <rawlog_prefix>_<date>.rawlog)", false, "", "file", cmd);
-		TCLAP::ValueArg<double> duration("", "duration", "stop after this many seconds (0 = Ctrl-C / SIGTERM / q)", false, 0, "s", cmd);
-		TCLAP::ValueArg<std::string> teleop("", "teleop", "none | keyboard (w/s/a/d/space, q quits) | joystick (button 0 dead-man, button 1 quits)", false, "none", "mode", cmd);
-		TCLAP::ValueArg<int> joyIndex("", "joystick", "joystick index (/dev/input/js<N>)", false, 0, "N", cmd);
-		TCLAP::ValueArg<double> joyMaxV("", "joystick-max-v", "speed at full stick (m/s)", false, 0.4, "m/s", cmd);
-		TCLAP::ValueArg<double> joyMaxW("", "joystick-max-w", "turn rate at full stick (deg/s)", false, 40, "deg/s", cmd);
-		TCLAP::ValueArg<double> vStep("", "teleop-v-step", "keyboard speed step (m/s)", false, 0.05, "m/s", cmd);
-		TCLAP::ValueArg<double> wStep("", "teleop-w-step", "keyboard turn-rate step (deg/s)", false, 10, "deg/s", cmd);
-		TCLAP::ValueArg<double> hold("", "hold", "reordering delay before writing (s)", false, 0.5, "s", cmd);
-		TCLAP::ValueArg<std::string> mapOut("", "map-out", "run the mapping pipeline live, write the map here at the stop", false, "", "dir", cmd);
+		TCLAP::ValueArg<double> duration("", "duration", "stop after this many seconds (0 = Ctrl-C / SIGTERM / q) (default: 0)", false, 0, "s", cmd);
+		TCLAP::ValueArg<std::string> teleop("", "teleop", "none | keyboard (w/s/a/d/space, q quits) | joystick (button 0 dead-man, button 1 quits) (default: none)", false, "none", "mode", cmd);
+		TCLAP::ValueArg<int> joyIndex("", "joystick", "joystick index (/dev/input/js<N>) (default: 0)", false, 0, "N", cmd);
+		TCLAP::ValueArg<double> joyMaxV("", "joystick-max-v", "speed at full stick (m/s) (default: 0.4)", false, 0.4, "m/s", cmd);
+		TCLAP::ValueArg<double> joyMaxW("", "joystick-max-w", "turn rate at full stick (deg/s) (default: 40)", false, 40, "deg/s", cmd);
+		TCLAP::ValueArg<double> vStep("", "teleop-v-step", "keyboard speed step (m/s) (default: 0.05)", false, 0.05, "m/s", cmd);
+		TCLAP::ValueArg<double> wStep("", "teleop-w-step", "keyboard turn-rate step (deg/s) (default: 10)", false, 10, "deg/s", cmd);
+		TCLAP::ValueArg<double> hold("", "hold", "reordering delay before writing (s) (default: 0.5)", false, 0.5, "s", cmd);
+		TCLAP::ValueArg<std::string> mapOut("", "map-out", "run the mapping pipeline live, write the map here at the stop (default: none)", false, "", "dir", cmd);
 		TCLAP::ValueArg<std::string> mapConfig("", "map-config", "pipeline INI (default config_ini/hslam-default.ini values)", false, "", "file", cmd);
 		if (!cmd.parse(argc, argv)) return 0;
 		if (teleop.getValue() != "none" && teleop.getValue() != "keyboard" && teleop.getValue() != "joystick")

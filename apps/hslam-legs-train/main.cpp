@@ -6,6 +6,7 @@
  * --config; forest settings from its [leg_classifier] section.
  * Cross-validated scores of the whole filter: hslam-bench legs. */
 #include <hslam/common/command_line.h>
+#include <hslam/common/version.h>
 #include <hslam/dynamic/dynamic_profiles.h>
 #include <hslam/dynamic/leg_training.h>
 
@@ -33,12 +34,12 @@ int main(int argc, char** argv)
 	using namespace hslam::dynamic;
 	try
 	{
-		TCLAP::CmdLine cmd("Trains the leg classifier on labelled laser data and writes the model file.", ' ', "hslam");
-		TCLAP::ValueArg<std::string> dataArg("", "data", "Folder laid out like ../shared/datasets/legs", false,
+		TCLAP::CmdLine cmd("Trains the leg classifier on labelled laser data and writes the model file.", ' ', hslam::common::versionText());
+		TCLAP::ValueArg<std::string> dataArg("", "data", "Folder laid out like ../shared/datasets/legs (default: ../shared/datasets/legs)", false,
 											 "../shared/datasets/legs", "DIR", cmd);
-		TCLAP::ValueArg<std::string> outArg("o", "out", "Model file to write (.yml, .yml.gz)", true, "", "MODEL", cmd);
+		TCLAP::ValueArg<std::string> outArg("o", "out", "Model file to write (.yml, .yml.gz) (required)", true, "", "MODEL", cmd);
 		TCLAP::ValueArg<std::string> configArg(
-			"c", "config", "INI: [dynamic_objects] overrides the Hokuyo legs profile, [leg_classifier] the forest",
+			"c", "config", "INI: [dynamic_objects] overrides the Hokuyo legs profile, [leg_classifier] the forest (default: none)",
 			false, "", "INI", cmd);
 		if (!cmd.parse(argc, argv)) return hslam::common::exitCodeAfterParseStop(argc, argv);
 

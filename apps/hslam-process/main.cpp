@@ -5,6 +5,8 @@
  *   hslam-process -c config_ini/hslam-default.ini -i input.rawlog -o outdir
  *                 [--set SECTION.KEY=VALUE ...] [--ground-truth REF.tum] [--quiet]
  */
+#include <hslam/common/data_paths.h>
+#include <hslam/common/version.h>
 #include <hslam/slam/CBatchProcessor.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
@@ -15,23 +17,26 @@ int main(int argc, char** argv)
 	TCLAP::CmdLine cmd(
 		"hslam-process: batch hybrid SLAM / mapping of a rawlog. Writes map.png, tiles/, "
 		"map.gridmap.gz, trajectory.tum, odometry.tum, timing.csv and config_used.ini into the output folder.",
-		' ', "0.1");
-	TCLAP::ValueArg<std::string> config("c", "config", "INI file (e.g. config_ini/hslam-default.ini)", true, "",
-										"file.ini", cmd);
-	TCLAP::ValueArg<std::string> input("i", "input", "input rawlog (.rawlog, gz or plain; either MRPT format)",
+		' ', hslam::common::versionText());
+	const std::string defaultConfig = hslam::common::defaultConfigFile();
+	TCLAP::ValueArg<std::string> config("c", "config",
+										"INI file; a relative path not found here is looked up in the installed "
+										"share/hslam (default: " + defaultConfig + ")",
+										false, defaultConfig, "file.ini", cmd);
+	TCLAP::ValueArg<std::string> input("i", "input", "input rawlog (.rawlog, gz or plain; either MRPT format) (required)",
 									   true, "", "file.rawlog", cmd);
-	TCLAP::ValueArg<std::string> output("o", "output", "output folder (created if missing)", true, "", "dir", cmd);
-	TCLAP::MultiArg<std::string> set("", "set", "override an INI value, repeatable: --set grid.resolution_m=0.05",
+	TCLAP::ValueArg<std::string> output("o", "output", "output folder (created if missing) (required)", true, "", "dir", cmd);
+	TCLAP::MultiArg<std::string> set("", "set", "override an INI value, repeatable: --set grid.resolution_m=0.05 (repeatable; default: none)",
 									 false, "SECTION.KEY=VALUE", cmd);
 	TCLAP::ValueArg<std::string> groundTruth("", "ground-truth",
-											 "reference trajectory (TUM) to evaluate the estimate against", false,
+											 "reference trajectory (TUM) to evaluate the estimate against (default: none)", false,
 											 "", "ref.tum", cmd);
-	TCLAP::SwitchArg quiet("q", "quiet", "no progress bar", cmd);
+	TCLAP::SwitchArg quiet("q", "quiet", "no progress bar (default: off)", cmd);
 	try
 	{
 		if (!cmd.parse(argc, argv)) return 0;  // --help or --version was printed
 		hslam::slam::TBatchRequest request;
-		request.config_file = config.getValue();
+		request.config_file = hslam::common::resolveDataFile(config.getValue());
 		request.overrides = set.getValue();
 		request.input_rawlog = input.getValue();
 		request.output_dir = output.getValue();

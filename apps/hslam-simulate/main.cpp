@@ -7,7 +7,9 @@
 #include "CSimulationWriter.h"
 
 #include <hslam/common/config_overrides.h>
+#include <hslam/common/data_paths.h>
 #include <hslam/common/options_io.h>
+#include <hslam/common/version.h>
 #include <hslam/sim/CSimulator.h>
 #include <hslam/sim/scene_rendering.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
@@ -115,20 +117,20 @@ int main(int argc, char** argv)
 		"Writes sim.rawlog (MRPT, observations only, gz), ground_truth.tum, odometry.tum, people.csv, "
 		"beam_labels.csv, sonar_truth.csv, corners.csv, gt_map.png, gt_map.gridmap.gz, overview.png, "
 		"summary.txt and config_used.ini into the output folder.",
-		' ', "0.1");
-	TCLAP::ValueArg<std::string> config("c", "config", "simulator INI (e.g. config_ini/sim-lab.ini)", true, "",
+		' ', hslam::common::versionText());
+	TCLAP::ValueArg<std::string> config("c", "config", "simulator INI (e.g. config_ini/sim-lab.ini; a relative path not found here is looked up in the installed share/hslam) (required)", true, "",
 										"file.ini", cmd);
-	TCLAP::ValueArg<std::string> output("o", "output", "output folder (created if missing)", true, "", "dir", cmd);
-	TCLAP::MultiArg<std::string> set("", "set", "override an INI value, repeatable: --set simulation.seed=7", false,
+	TCLAP::ValueArg<std::string> output("o", "output", "output folder (created if missing) (required)", true, "", "dir", cmd);
+	TCLAP::MultiArg<std::string> set("", "set", "override an INI value, repeatable: --set simulation.seed=7 (repeatable; default: none)", false,
 									 "SECTION.KEY=VALUE", cmd);
-	TCLAP::ValueArg<double> gtRes("", "gt-resolution", "cell size of the ground-truth map (m)", false, 0.05, "m", cmd);
-	TCLAP::SwitchArg quiet("q", "quiet", "no progress or summary on the terminal", cmd);
+	TCLAP::ValueArg<double> gtRes("", "gt-resolution", "cell size of the ground-truth map (m) (default: 0.05)", false, 0.05, "m", cmd);
+	TCLAP::SwitchArg quiet("q", "quiet", "no progress or summary on the terminal (default: off)", cmd);
 	try
 	{
 		if (!cmd.parse(argc, argv)) return 0;
 		if (!(gtRes.getValue() >= 0.01 && gtRes.getValue() <= 1.0))
 			throw std::runtime_error("--gt-resolution must be in [0.01, 1] m");
-		return simulate(config.getValue(), set.getValue(), output.getValue(), gtRes.getValue(), quiet.getValue());
+		return simulate(hslam::common::resolveDataFile(config.getValue()), set.getValue(), output.getValue(), gtRes.getValue(), quiet.getValue());
 	}
 	catch (const TCLAP::ArgException& e)
 	{

@@ -1,4 +1,5 @@
 /* hslam: writing an evaluation as JSON. */
+#include <hslam/common/json_text.h>
 #include <hslam/eval/evaluation_json.h>
 
 #include <mrpt/core/bits_math.h>
@@ -17,32 +18,10 @@ namespace
 /** Ordered key -> JSON value text. */
 using TJsonFields = std::vector<std::pair<std::string, std::string>>;
 
-std::string jsonNumber(double value, const char* format = "%.10g")
-{
-	if (!std::isfinite(value)) return "null";
-	char text[64];
-	std::snprintf(text, sizeof(text), format, value);
-	return text;
-}
+using common::jsonNumber;
+using common::jsonString;
 
 std::string jsonCount(size_t value) { return std::to_string(value); }
-
-std::string jsonString(const std::string& value)
-{
-	std::string out = "\"";
-	for (const char c : value)
-	{
-		if (c == '"' || c == '\\') out += std::string("\\") + c;
-		else if (static_cast<unsigned char>(c) < 0x20)
-		{
-			char escaped[8];
-			std::snprintf(escaped, sizeof(escaped), "\\u%04x", static_cast<unsigned>(c));
-			out += escaped;
-		}
-		else out += c;
-	}
-	return out + "\"";
-}
 
 void addTimeRange(TJsonFields& f, const std::string& prefix, const TTimeRange& t)
 {

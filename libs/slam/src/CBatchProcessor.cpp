@@ -6,9 +6,11 @@
 #include <hslam/eval/evaluation_table.h>
 #include <hslam/slam/CBatchProcessor.h>
 #include <hslam/slam/pose_plots.h>
+#include <hslam/slam/run_report.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -31,6 +33,7 @@ std::vector<std::string> CBatchProcessor::knownSections()
 
 TBatchResult CBatchProcessor::run()
 {
+	const auto started = std::chrono::steady_clock::now();
 	auto cfg = common::loadConfigWithOverrides(m_request.config_file, m_request.overrides);
 	common::resolvePathNextToIni(cfg, "dynamic_objects", "classifier_model", m_request.config_file);
 	common::checkKnownSections(cfg, knownSections());
@@ -50,6 +53,9 @@ TBatchResult CBatchProcessor::run()
 	writeEffectiveConfig(pipeline, outputOptions);
 	printSummary(pipeline, result);
 	if (!m_request.ground_truth_tum.empty()) evaluate(pipeline, result);
+	const std::chrono::duration<double> wall_s = std::chrono::steady_clock::now() - started;
+	for (auto& f : writeRunReport(pipeline, m_request, result, wall_s.count())) result.files_written.push_back(f);
+	m_out << "\nReport: " << m_request.output_dir << "/report.html (figures: summary.json)\n";
 	return result;
 }
 
@@ -167,6 +173,7 @@ void CBatchProcessor::evaluate(const CMappingPipeline& pipeline, TBatchResult& r
 	eval::printEvaluation(m_out, errors);
 	eval::writeEvaluationJson(m_request.output_dir + "/evaluation.json", errors);
 	result.evaluated = true;
+	result.evaluation = errors;
 }
 
 }  // namespace hslam::slam

@@ -1,13 +1,15 @@
 /* hslam: the batch mapping job behind `hslam-process`: reads a rawlog
  * through the mapping pipeline with a progress bar, writes the outputs (see
  * batch_outputs.h), and optionally evaluates the trajectory against a
- * reference. A fault in the input (corrupt or truncated rawlog) stops the
+ * reference (summary.json and report.html last, see run_report.h). A fault in the input (corrupt or truncated rawlog) stops the
  * reading, but everything processed before it is still written. */
 #pragma once
 
+#include <hslam/eval/evaluate_trajectory.h>
 #include <hslam/slam/CMappingPipeline.h>
 #include <hslam/slam/batch_outputs.h>
 
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -30,6 +32,7 @@ struct TBatchResult
 	std::string input_error;  //!< non-empty if reading stopped at a fault
 	std::vector<std::string> files_written;
 	bool evaluated = false;
+	std::optional<eval::TTrajectoryErrors> evaluation;  //!< with a ground truth
 };
 
 class CBatchProcessor

@@ -1,0 +1,47 @@
+/* hslam: the figures of one hslam-process run, as summary.json beside its
+ * outputs (read by scripts/batch-process.sh to build a table over many runs,
+ * and shown at the top of report.html).
+ *
+ * summary.json keys (units in the names): input, output_dir, hslam_version,
+ * mrpt_version, pose_method, entries, scans, scans_ignored, odometry_gaps,
+ * sonar_observations, tiles, sonar_corners, leg_tracks and person_tracks
+ * (tracks confirmed at least once),
+ * wall_s (whole run, outputs included), ms_per_scan (wall_s per scan),
+ * input_error (null if the whole input was read), evaluated, ate_rmse_m,
+ * ate_mean_m, ate_max_m, matched_poses (null without a reference),
+ * warnings (array of sentences) and, with a reference, evaluation (the
+ * object hslam-evaluate --json writes). */
+#pragma once
+
+#include <hslam/slam/CBatchProcessor.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace hslam::slam
+{
+struct TRunSummary
+{
+	std::string input, output_dir, pose_method;
+	size_t entries = 0, scans = 0, scans_ignored = 0, odometry_gaps = 0, sonar_observations = 0;
+	size_t tiles = 0, sonar_corners = 0, leg_tracks = 0, person_tracks = 0;
+	size_t matches = 0, matches_failed = 0, matches_rejected = 0;
+	double wall_s = 0;
+	double ms_per_scan = 0;  //!< wall_s * 1000 / scans (0 without scans)
+	std::string input_error;  //!< empty when the whole input was read
+	std::optional<eval::TTrajectoryErrors> evaluation;
+	std::vector<std::string> warnings;  //!< things a person should look at
+};
+
+/** Collects the figures of a finished run; `wall_s` is the run's duration. */
+TRunSummary summarizeRun(const CMappingPipeline& pipeline, const TBatchRequest& request, const TBatchResult& result,
+						 double wall_s);
+
+/** The summary.json text. */
+std::string runSummaryToJson(const TRunSummary& summary);
+
+/** Writes runSummaryToJson() to `path`; throws std::runtime_error naming it. */
+void writeRunSummaryJson(const TRunSummary& summary, const std::string& path);
+
+}  // namespace hslam::slam

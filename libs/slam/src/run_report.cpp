@@ -1,0 +1,16 @@
+#include <hslam/slam/html_report.h>
+#include <hslam/slam/run_report.h>
+#include <hslam/slam/run_summary.h>
+
+namespace hslam::slam
+{
+std::vector<std::string> writeRunReport(const CMappingPipeline& pipeline, const TBatchRequest& request,
+										const TBatchResult& result, double wall_s)
+{
+	const auto summary = summarizeRun(pipeline, request, result, wall_s);
+	const std::string json = request.output_dir + "/summary.json";
+	writeRunSummaryJson(summary, json);
+	writeHtmlReport(summary, pipeline, request.output_dir);
+	return {json, request.output_dir + "/report.html"};
+}
+}  // namespace hslam::slam

@@ -1,0 +1,129 @@
+#include <hslam/common/json_text.h>
+#include <hslam/common/version.h>
+#include <hslam/eval/evaluation_json.h>
+#include <hslam/slam/run_summary.h>
+
+#include <fstream>
+#include <set>
+#include <stdexcept>
+#include <utility>
+
+namespace hslam::slam
+{
+namespace
+{
+using common::jsonNumber;
+using common::jsonString;
+
+void countMatches(const CMappingPipeline& pipeline, TRunSummary& s)
+{
+	for (const auto& [t, e] : pipeline.estimates())
+	{
+		if (!e.matched) continue;
+		++s.matches;
+		if (e.match_quality == matching::EMatchQuality::failed) ++s.matches_failed;
+		else if (!e.match_accepted) ++s.matches_rejected;
+	}
+}
+
+void countTracks(const CMappingPipeline& pipeline, TRunSummary& s)
+{
+	std::set<int> legs, persons;
+	for (const auto& row : pipeline.trackRows())
+		if (row.track.state != dynamic::ETrackState::tentative)  // confirmed at least once
+			(std::string(row.kind) == "person" ? persons : legs).insert(row.track.id);
+	s.leg_tracks = legs.size();
+	s.person_tracks = persons.size();
+}
+
+void addWarnings(TRunSummary& s)
+{
+	auto& w = s.warnings;
+	if (!s.input_error.empty())
+		w.push_back("input fault: " + s.input_error + "; the results cover the " + std::to_string(s.entries) +
+					" entries read before it");
+	if (s.scans == 0) w.push_back("no laser scan was used (see [process] laser_label)");
+	if (s.scans_ignored > 0)
+		w.push_back(std::to_string(s.scans_ignored) + " laser scans ignored: another sensor label");
+	if (s.odometry_gaps > 0) w.push_back(std::to_string(s.odometry_gaps) + " odometry gaps (motion unknown)");
+	if (s.matches_failed > 0)
+		w.push_back(std::to_string(s.matches_failed) + " of " + std::to_string(s.matches) + " scan matches failed");
+	if (s.matches_rejected > 0)
+		w.push_back(std::to_string(s.matches_rejected) + " scan matches rejected by the UKF gate");
+	if (s.evaluation && s.evaluation->unmatched_estimate > 0)
+		w.push_back(std::to_string(s.evaluation->unmatched_estimate) +
+					" estimated poses without a reference pose within max_dt_s");
+}
+}  // namespace
+
+TRunSummary summarizeRun(const CMappingPipeline& pipeline, const TBatchRequest& request, const TBatchResult& result,
+						 double wall_s)
+{
+	TRunSummary s;
+	const auto& c = result.counters;
+	s.input = request.input_rawlog;
+	s.output_dir = request.output_dir;
+	s.pose_method = pipeline.poseEstimatorName();
+	s.entries = c.entries;
+	s.scans = c.laser_scans;
+	s.scans_ignored = c.laser_scans_ignored;
+	s.odometry_gaps = c.odometry_gaps;
+	s.sonar_observations = c.sonar_observations;
+	s.tiles = pipeline.grid().tileCount();
+	s.sonar_corners = pipeline.sonarStage().corners().size();
+	countMatches(pipeline, s);
+	countTracks(pipeline, s);
+	s.wall_s = wall_s;
+	s.ms_per_scan = s.scans > 0 ? wall_s * 1000.0 / static_cast<double>(s.scans) : 0.0;
+	s.input_error = result.input_error;
+	s.evaluation = result.evaluation;
+	addWarnings(s);
+	return s;
+}
+
+std::string runSummaryToJson(const TRunSummary& s)
+{
+	const bool evaluated = s.evaluation.has_value();
+	const auto ate = [&](double eval::TErrorStats::*field) {
+		return evaluated && !s.evaluation->ate.position_m.empty() ? jsonNumber(s.evaluation->ate.position_m.*field)
+																	: std::string("null");
+	};
+	const std::vector<std::pair<std::string, std::string>> fields = {
+		{"input", jsonString(s.input)},
+		{"output_dir", jsonString(s.output_dir)},
+		{"hslam_version", jsonString(common::projectVersion())},
+		{"mrpt_version", jsonString(common::mrptBuildVersion())},
+		{"pose_method", jsonString(s.pose_method)},
+		{"entries", std::to_string(s.entries)},
+		{"scans", std::to_string(s.scans)},
+		{"scans_ignored", std::to_string(s.scans_ignored)},
+		{"odometry_gaps", std::to_string(s.odometry_gaps)},
+		{"sonar_observations", std::to_string(s.sonar_observations)},
+		{"tiles", std::to_string(s.tiles)},
+		{"sonar_corners", std::to_string(s.sonar_corners)},
+		{"leg_tracks", std::to_string(s.leg_tracks)},
+		{"person_tracks", std::to_string(s.person_tracks)},
+		{"wall_s", jsonNumber(s.wall_s, "%.3f")},
+		{"ms_per_scan", jsonNumber(s.ms_per_scan, "%.3f")},
+		{"input_error", s.input_error.empty() ? "null" : jsonString(s.input_error)},
+		{"evaluated", evaluated ? "true" : "false"},
+		{"ate_rmse_m", ate(&eval::TErrorStats::rmse)},
+		{"ate_mean_m", ate(&eval::TErrorStats::mean)},
+		{"ate_max_m", ate(&eval::TErrorStats::max)},
+		{"matched_poses", evaluated ? std::to_string(s.evaluation->matched) : "null"},
+		{"warnings", common::jsonStringArray(s.warnings)},
+		{"evaluation", evaluated ? eval::evaluationToJson(*s.evaluation) : "null"}};
+	std::string out = "{\n";
+	for (size_t i = 0; i < fields.size(); ++i)
+		out += "  " + jsonString(fields[i].first) + ": " + fields[i].second + (i + 1 < fields.size() ? ",\n" : "\n");
+	return out + "}\n";
+}
+
+void writeRunSummaryJson(const TRunSummary& summary, const std::string& path)
+{
+	std::ofstream f(path);
+	f << runSummaryToJson(summary);
+	if (!f) throw std::runtime_error(path + ": cannot write");
+}
+
+}  // namespace hslam::slam
