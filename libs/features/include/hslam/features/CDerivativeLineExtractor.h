@@ -108,6 +108,7 @@ class CDerivativeLineExtractor : public CLineExtractor
 
 	std::string name() const override { return "derivative"; }
 	TLineSegmentList extract(const mrpt::obs::CObservation2DRangeScan& scan) const override;
+	void saveOptions(mrpt::config::CConfigFileBase& out, const std::string& section) const override;
 
 	/** Steps 1-3 only: the piece boundaries of the valid points (each range
 	 * starts a piece), before the noise filters. Exposed for tests and plots. */

@@ -46,6 +46,7 @@ class CIepLineExtractor : public CLineExtractor
 
 	std::string name() const override { return "iep"; }
 	TLineSegmentList extract(const mrpt::obs::CObservation2DRangeScan& scan) const override;
+	void saveOptions(mrpt::config::CConfigFileBase& out, const std::string& section) const override;
 
 	const TOptions& options() const { return m_options; }
 

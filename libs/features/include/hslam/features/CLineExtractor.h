@@ -24,6 +24,9 @@ class CLineExtractor
 	 * ordered by first_beam. Invalid beams (validity flag off, NaN, <= 0, or
 	 * at/after the scanner's maxRange) are never part of a line. */
 	virtual TLineSegmentList extract(const mrpt::obs::CObservation2DRangeScan& scan) const = 0;
+	/** Writes every option into `section` (the inverse of loading them
+	 * there), so a run's config_used.ini holds the extractor's settings. */
+	virtual void saveOptions(mrpt::config::CConfigFileBase& out, const std::string& section) const = 0;
 };
 
 /** The method names createLineExtractor() accepts: derivative, iep, ransac. */

@@ -53,6 +53,7 @@ class CRansacLineExtractor : public CLineExtractor
 
 	std::string name() const override { return "ransac"; }
 	TLineSegmentList extract(const mrpt::obs::CObservation2DRangeScan& scan) const override;
+	void saveOptions(mrpt::config::CConfigFileBase& out, const std::string& section) const override;
 
 	const TOptions& options() const { return m_options; }
 
