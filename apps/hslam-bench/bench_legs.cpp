@@ -266,13 +266,12 @@ TTrailResult printTrail(const std::string& title, const dynamic::CDynamicObjectF
 
 int runLegsSuite(const std::string& dataDir, const std::string& outDir, const std::string& configFile)
 {
-	const auto rulesOptions = dynamic::loadDynamicOptions(dynamic::kHokuyoLegsProfileIni, configFile);
-	auto learnedOptions = dynamic::loadDynamicOptions(std::string(dynamic::kHokuyoLegsProfileIni) +
-												 dynamic::kLearnedLegsProfileLines,
-											 configFile);
-	std::cout << "Profile for 0.35 deg Hokuyo scans (thesis defaults otherwise):\n"
-			  << dynamic::kHokuyoLegsProfileIni << "with the learned classifier also:\n"
-			  << dynamic::kLearnedLegsProfileLines;
+	// The profiles are the INI files of config_ini/ (run from the repository root).
+	const std::string rulesIni = "config_ini/hslam-legs-hokuyo-rules.ini", learnedIni = "config_ini/hslam-legs-hokuyo.ini";
+	const auto rulesOptions = dynamic::loadDynamicOptions({rulesIni, configFile});
+	auto learnedOptions = dynamic::loadDynamicOptions({learnedIni, configFile});
+	std::cout << "Profiles for 0.35 deg Hokuyo scans (thesis defaults otherwise): [dynamic_objects] of " << rulesIni
+			  << " (rules), " << learnedIni << " (learned classifier)\n";
 	if (!configFile.empty()) std::cout << "then the [dynamic_objects] keys of " << configFile << "\n";
 
 	const auto parts = dynamic::loadLegDataset(dataDir);

@@ -246,8 +246,9 @@ int runLegsSimSuite(const std::string& dataDir, const std::string& outDir, const
 {
 	// Defaults (or [dynamic_objects] of configFile), and for comparison the
 	// thesis rule set (the simulated LMS200 has the thesis' 1 deg).
-	const auto options = dynamic::loadDynamicOptions("", configFile);
-	const auto thesis = dynamic::loadDynamicOptions(dynamic::kThesisProfileIni, "");
+	const std::string thesisIni = "config_ini/hslam-legs-thesis.ini";  // run from the repository root
+	const auto options = dynamic::loadDynamicOptions({configFile});
+	const auto thesis = dynamic::loadDynamicOptions({thesisIni});
 	std::vector<fs::path> samples;
 	for (const auto& e : fs::directory_iterator(dataDir))
 		if (fs::exists(e.path() / "sim.rawlog") && fs::exists(e.path() / "beam_labels.csv.gz") &&
@@ -257,7 +258,7 @@ int runLegsSimSuite(const std::string& dataDir, const std::string& outDir, const
 	if (samples.empty()) throw std::runtime_error(dataDir + ": no simulated samples (sim.rawlog + labels) found");
 	fs::create_directories(outDir);
 
-	const auto th = runAllSamples(samples, thesis, "thesis rule set, kThesisProfileIni", "");
+	const auto th = runAllSamples(samples, thesis, "thesis rule set, " + thesisIni, "");
 	std::cout << "  people cells reduction: " << std::setprecision(3) << reduction(th) << "\n\n";
 	const auto total = runAllSamples(samples, options, configFile.empty() ? "defaults" : configFile, outDir);
 	std::cout << "  maps side by side: " << outDir << "/legs_sim_<sample>_maps.png\n\n"

@@ -21,13 +21,13 @@
 #include "bench_common.h"
 
 #include <hslam/common/config_overrides.h>
+#include <hslam/common/ini_file.h>
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/eval/point_landmark_score.h>
 #include <hslam/io/CRawlogReader.h>
 #include <hslam/maps/grid_comparison.h>
 #include <hslam/sim/scene.h>
 #include <hslam/slam/CMappingPipeline.h>
-#include <mrpt/config/CConfigFile.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/serialization/CArchive.h>
 
@@ -93,7 +93,7 @@ struct TTotals
 std::vector<sim::TCircle> staticCircles(const std::string& sample)
 {
 	const std::string ini = "config_ini/sim-" + sample + ".ini";
-	const mrpt::config::CConfigFile cfg(ini);
+	const auto cfg = common::loadIniFile(ini);
 	const std::string scene = cfg.read_string("world", "scene_file", "");
 	if (scene.empty()) return {};
 	return sim::loadSceneFile("config_ini/" + scene).world.circles();

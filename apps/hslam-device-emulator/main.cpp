@@ -17,7 +17,7 @@
 #include <hslam/sim/CLaserSimulator.h>
 #include <hslam/sim/CSonarSimulator.h>
 #include <hslam/sim/scene.h>
-#include <mrpt/config/CConfigFile.h>
+#include <hslam/common/ini_file.h>
 #include <mrpt/system/filesystem.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/system/datetime.h>
@@ -172,8 +172,7 @@ int main(int argc, char** argv)
 		CLms200Emulator::TScanModel scanModel;
 		if (!simIni.getValue().empty())
 		{
-			if (!mrpt::system::fileExists(simIni.getValue())) throw std::runtime_error("not found: " + simIni.getValue());
-			mrpt::config::CConfigFile simCfg(simIni.getValue());
+			const auto simCfg = hslam::common::loadIniFile(simIni.getValue());
 			// Only the model sections are read here; their other keys (start
 			// pose, rates, labels) belong to hslam-simulate.
 			hslam::sim::TDiffDriveOptions ro;

@@ -17,13 +17,13 @@
 #include "CRecordingWriter.h"
 #include "CSensorThread.h"
 
+#include <hslam/common/ini_file.h>
 #include <hslam/common/options_io.h>
 #include <hslam/common/version.h>
 #include <hslam/hwdrivers/CPioneerSensor.h>
 #include <hslam/slam/batch_outputs.h>
+#include <hslam/slam/mapping_config.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
-#include <mrpt/config/CConfigFile.h>
-#include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/system/datetime.h>
 #include <mrpt/system/filesystem.h>
 #include <mrpt/system/os.h>
@@ -111,26 +111,23 @@ int main(int argc, char** argv)
 		}
 		hslam::hwdrivers::registerHwdriversSensors();
 
-		if (!mrpt::system::fileExists(ini.getValue())) throw std::runtime_error("config file not found: " + ini.getValue());
-		mrpt::config::CConfigFile cfg(ini.getValue());
+		const auto cfg = hslam::common::loadIniFile(ini.getValue());
 		TGlobalOptions g;
 		hslam::common::loadOptions(g, cfg, "global");
 		const std::string outPath = out.getValue().empty() ? defaultOutput(g.rawlog_prefix) : out.getValue();
 
-		std::unique_ptr<mrpt::config::CConfigFileBase> mapCfg;
+		// --map-config goes through the same loading, checks and path
+		// resolution as hslam-process (TMappingConfig::fromConfig).
 		std::unique_ptr<hslam::slam::CMappingPipeline> pipeline;
 		hslam::slam::TOutputOptions mapOutOpts;
 		if (!mapOut.getValue().empty())
 		{
-			if (mapConfig.getValue().empty())
-				mapCfg = std::make_unique<mrpt::config::CConfigFileMemory>();  // pipeline defaults
-			else if (!mrpt::system::fileExists(mapConfig.getValue()))
-				throw std::runtime_error("map config not found: " + mapConfig.getValue());
-			else
-				mapCfg = std::make_unique<mrpt::config::CConfigFile>(mapConfig.getValue());
-			pipeline = std::make_unique<hslam::slam::CMappingPipeline>(*mapCfg);
-			if (!mapConfig.getValue().empty()) hslam::common::loadOptions(mapOutOpts, *mapCfg, "output");
+			const auto mapCfg = hslam::slam::TMappingConfig::fromConfig(mapConfig.getValue(), {});
+			pipeline = std::make_unique<hslam::slam::CMappingPipeline>(mapCfg.ini);
+			mapOutOpts = mapCfg.output;
 		}
+		else if (!mapConfig.getValue().empty())
+			throw std::runtime_error("--map-config needs --map-out DIR (where the live map is written)");
 
 		// Sensor sections (as rawlog-grabber: all but [global] and ignored ones);
 		// the sensors only call the sink once started, after `writer` exists.

@@ -1,9 +1,10 @@
 /* hslam-legs-train: trains the learned leg classifier (CLegClassifier, a
  * random forest over leg_features.h) on labelled laser data laid out like
  * ../shared/datasets/legs/ and writes the model that [dynamic_objects]
- * classifier_model loads. Segmentation and range limit come from the Hokuyo
- * legs profile (dynamic_profiles.h) and the [dynamic_objects] keys of
- * --config; forest settings from its [leg_classifier] section.
+ * classifier_model loads. Segmentation and range limit come from the
+ * [dynamic_objects] keys of --config (default: the Hokuyo legs profile
+ * config_ini/hslam-legs-hokuyo.ini); forest settings from its
+ * [leg_classifier] section.
  * Cross-validated scores of the whole filter: hslam-bench legs. */
 #include <hslam/common/command_line.h>
 #include <hslam/common/version.h>
@@ -39,12 +40,11 @@ int main(int argc, char** argv)
 											 "../shared/datasets/legs", "DIR", cmd);
 		TCLAP::ValueArg<std::string> outArg("o", "out", "Model file to write (.yml, .yml.gz) (required)", true, "", "MODEL", cmd);
 		TCLAP::ValueArg<std::string> configArg(
-			"c", "config", "INI: [dynamic_objects] overrides the Hokuyo legs profile, [leg_classifier] the forest (default: none)",
-			false, "", "INI", cmd);
+			"c", "config", "INI: [dynamic_objects] gives the segmentation, [leg_classifier] the forest",
+			false, "config_ini/hslam-legs-hokuyo.ini", "INI", cmd);
 		if (!cmd.parse(argc, argv)) return hslam::common::exitCodeAfterParseStop(argc, argv);
 
-		const auto options = loadDynamicOptions(std::string(kHokuyoLegsProfileIni) + kLearnedLegsProfileLines,
-												configArg.getValue());
+		const auto options = loadDynamicOptions({configArg.getValue()});
 		const auto training = loadLegTrainOptions(configArg.getValue());
 		std::cout << "reading " << dataArg.getValue() << " ..." << std::endl;
 		const auto parts = loadLegDataset(dataArg.getValue());

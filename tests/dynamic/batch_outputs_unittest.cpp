@@ -1,5 +1,4 @@
 #include <gtest/gtest.h>
-#include <hslam/dynamic/dynamic_profiles.h>
 #include <hslam/slam/CBatchProcessor.h>
 #include <hslam/testing/temp_dir.h>
 #include <hslam/testing/test_paths.h>
@@ -13,13 +12,10 @@
 TEST(DynamicBatchOutputs, TracksCsvAndDebugImages)
 {
 	hslam::testing::CTempDir dir;
-	{
-		std::ofstream ini(dir.file("legs.ini"));
-		ini << hslam::dynamic::kHokuyoLegsProfileIni << "[laser_model]\nmax_range_m = 5.5\n"
-			<< "[output]\ndynamic_debug_images = true\ndynamic_debug_max_images = 5\nwrite_tiles = false\n";
-	}
 	hslam::slam::TBatchRequest request;
-	request.config_file = dir.file("legs.ini");
+	request.config_file = std::string(HSLAM_SOURCE_DIR) + "/config_ini/hslam-legs-hokuyo-rules.ini";
+	request.overrides = {"laser_model.max_range_m=5.5", "output.dynamic_debug_images=true",
+						 "output.dynamic_debug_max_images=5", "output.write_tiles=false"};
 	request.input_rawlog = std::string(HSLAM_SHARED_DATASETS_DIR) + "/legs/demo_stationary_simple_environment.rawlog";
 	request.output_dir = dir.file("out");
 	request.show_progress = false;

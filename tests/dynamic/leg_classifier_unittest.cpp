@@ -355,7 +355,7 @@ TEST(LegClassifierRealData, HeldOutHokuyoLegsAreRecognised)
 	// profile); 0.664 / 0.540 at p >= 0.4. One scan cannot tell a leg from
 	// clutter; the tracker's mean over a track does (hslam-bench legs).
 	const auto parts = loadLegDataset(std::string(HSLAM_SHARED_DATASETS_DIR) + "/legs");
-	auto options = loadDynamicOptions(std::string(kHokuyoLegsProfileIni) + kLearnedLegsProfileLines, "");
+	auto options = loadDynamicOptions({std::string(HSLAM_SOURCE_DIR) + "/config_ini/hslam-legs-hokuyo.ini"});
 	const auto folds = legCrossValidationFolds(parts);
 	std::vector<size_t> train, test;
 	for (size_t i = 0; i < parts.size(); ++i) (folds[i] == 1 ? test : train).push_back(i);
@@ -401,16 +401,18 @@ TEST(LegClassifierRealData, HeldOutHokuyoLegsAreRecognised)
 	EXPECT_LE(static_cast<double>(falseLegs[1]) / negScans, 1.0);
 }
 
-TEST(LegClassifierRealData, ShippedHokuyoModelIsWhatHslamLegsTrainWritesAndTheIniMatchesTheProfile)
+TEST(LegClassifierRealData, ShippedHokuyoModelIsWhatHslamLegsTrainWritesFromTheProfile)
 {
-	// config_ini/hslam-legs-hokuyo.ini must select what hslam-bench legs scores.
-	const auto profile = loadDynamicOptions(std::string(kHokuyoLegsProfileIni) + kLearnedLegsProfileLines, "");
-	const auto ini = loadDynamicOptions("", std::string(HSLAM_SOURCE_DIR) + "/config_ini/hslam-legs-hokuyo.ini");
-	EXPECT_EQ(ini.detector.max_range_m, profile.detector.max_range_m);
-	EXPECT_EQ(ini.detector.classifier_threshold, profile.detector.classifier_threshold);
-	EXPECT_EQ(ini.tracker.confirm_min_leg_probability, profile.tracker.confirm_min_leg_probability);
-	EXPECT_EQ(ini.person_needs_dynamic_leg, profile.person_needs_dynamic_leg);
-	EXPECT_EQ(ini.detector.classifier_model, "models/legs-hokuyo-forest.yml.gz");
+	// config_ini/hslam-legs-hokuyo.ini is the one source of the learned
+	// profile (hslam-bench legs, hslam-legs-train and hslam-process read it).
+	const auto profile = loadDynamicOptions({std::string(HSLAM_SOURCE_DIR) + "/config_ini/hslam-legs-hokuyo.ini"});
+	EXPECT_EQ(profile.detector.max_range_m, 5.0);
+	EXPECT_EQ(profile.detector.classifier_threshold, 0.05);
+	EXPECT_EQ(profile.tracker.confirm_min_leg_probability, 0.4);
+	EXPECT_FALSE(profile.person_needs_dynamic_leg);
+	// Relative to the INI's folder, never the working directory.
+	EXPECT_EQ(profile.detector.classifier_model,
+			  std::string(HSLAM_SOURCE_DIR) + "/config_ini/models/legs-hokuyo-forest.yml.gz");
 
 	// The shipped model answers like a forest trained now on all the data
 	// (hslam-legs-train: same profile, default forest options, fixed seed).

@@ -18,15 +18,13 @@ namespace
 {
 constexpr double kDeg = M_PI / 180;
 
-CDynamicObjectFilter::TOptions profile(const char* ini)
+/** A profile of config_ini/ (dynamic_profiles.h). */
+CDynamicObjectFilter::TOptions profile(const std::string& iniName)
 {
-	mrpt::config::CConfigFileMemory cfg{std::string(ini)};
-	CDynamicObjectFilter::TOptions options;
-	hslam::common::loadOptions(options, cfg, "dynamic_objects");
-	return options;
+	return loadDynamicOptions({std::string(HSLAM_SOURCE_DIR) + "/config_ini/" + iniName});
 }
 
-CLegDetector thesisDetector() { return CLegDetector(profile(kThesisProfileIni).detector); }
+CLegDetector thesisDetector() { return CLegDetector(profile("hslam-legs-thesis.ini").detector); }
 }  // namespace
 
 TEST(FindInterv, ReproducesThesisTableAtOneDegree)
@@ -143,7 +141,7 @@ TEST(LegDetector, FindsAnnotatedLegInRealHokuyoScan)
 	ASSERT_TRUE(scan);
 	ASSERT_EQ(scan->getScanSize(), 768u);
 
-	const CLegDetector hokuyo(profile(kHokuyoLegsProfileIni).detector);
+	const CLegDetector hokuyo(profile("hslam-legs-hokuyo-rules.ini").detector);
 	const auto legs = hokuyo.detect(*scan);
 	size_t near = 0;
 	for (const auto& l : legs) near += std::hypot(l.x_m - 1.9889, l.y_m - 0.0976) < 0.1;

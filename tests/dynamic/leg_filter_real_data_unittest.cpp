@@ -20,7 +20,7 @@ TEST(LegFilterRealData, CrossValidatedLegsFoundWithFewFalseLegs)
 	// scan; causal 0.805 / 0.007; detector alone 0.972 / 4.90 (the goal is
 	// >= 0.90 with < 0.1).
 	const auto parts = loadLegDataset(std::string(HSLAM_SHARED_DATASETS_DIR) + "/legs");
-	const auto options = loadDynamicOptions(std::string(kHokuyoLegsProfileIni) + kLearnedLegsProfileLines, "");
+	const auto options = loadDynamicOptions({std::string(HSLAM_SOURCE_DIR) + "/config_ini/hslam-legs-hokuyo.ini"});
 	const auto folds = trainFoldClassifiers(parts, options.detector, CLegClassifier::TTrainOptions());
 	ASSERT_EQ(folds.models.size(), 3u);
 	size_t annotated = 0, lateFound = 0, causalFound = 0, negativeScans = 0, lateFalse = 0, causalFalse = 0;

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 #include <hslam/common/options_io.h>
-#include <hslam/dynamic/dynamic_profiles.h>
+#include <hslam/common/config_overrides.h>
 #include <hslam/dynamic/occupied_cells.h>
 #include <hslam/io/CRawlogReader.h>
 #include <hslam/maps/CLaserGridInserter.h>
@@ -21,11 +21,10 @@ struct TResult
 /** Maps the real static-scanner log with people walking, filter on or off. */
 TResult mapDemo(bool exclude, size_t maxScans)
 {
-	// The Hokuyo settings (0.35 deg) with the switch, and the laser's 5.6 m range.
-	std::ostringstream ini;
-	ini << hslam::dynamic::kHokuyoLegsProfileIni << "enabled = " << (exclude ? "true" : "false")
-		<< "\n[laser_model]\nmax_range_m = 5.5\n";
-	mrpt::config::CConfigFileMemory cfg(ini.str());
+	// The Hokuyo rules (0.35 deg) with the switch, and the laser's 5.6 m range.
+	const auto cfg = hslam::common::loadConfigWithOverrides(
+		std::string(HSLAM_SOURCE_DIR) + "/config_ini/hslam-legs-hokuyo-rules.ini",
+		{std::string("dynamic_objects.enabled=") + (exclude ? "true" : "false"), "laser_model.max_range_m=5.5"});
 	hslam::slam::CMappingPipeline pipeline(cfg);
 	hslam::io::CRawlogReader reader(std::string(HSLAM_SHARED_DATASETS_DIR) +
 									"/legs/demo_stationary_simple_environment.rawlog");

@@ -1,10 +1,9 @@
 #include <hslam/common/config_overrides.h>
+#include <hslam/common/ini_file.h>
 #include <hslam/common/options_io.h>
 #include <hslam/common/parse_number.h>
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 namespace hslam::common
 {
@@ -17,33 +16,38 @@ TConfigOverride parseConfigOverride(const std::string& text)
 	return {trim(text.substr(0, dot)), trim(text.substr(dot + 1, eq - dot - 1)), trim(text.substr(eq + 1))};
 }
 
-mrpt::config::CConfigFileMemory loadConfigWithOverrides(
-	const std::string& iniFile, const std::vector<std::string>& overrides)
+namespace
+{
+/** Makes the value of `key` absolute, relative to `base`. */
+void makeAbsolute(mrpt::config::CConfigFileMemory& cfg, const TPathKey& key, const std::filesystem::path& base)
+{
+	if (!cfg.keyExists(key.section, key.key)) return;
+	const std::string value = stripInlineComment(cfg.read_string(key.section, key.key, "", false));
+	if (value.empty()) return;
+	const std::filesystem::path path(value);
+	if (path.is_absolute()) return;
+	cfg.write(key.section, key.key, std::filesystem::absolute(base / path).lexically_normal().string());
+}
+}  // namespace
+
+mrpt::config::CConfigFileMemory loadConfigWithOverrides(const std::string& iniFile,
+														const std::vector<std::string>& overrides,
+														const std::vector<TPathKey>& pathKeys)
 {
 	mrpt::config::CConfigFileMemory cfg;
 	if (!iniFile.empty())
 	{
-		std::ifstream in(iniFile);
-		if (!in) throw config_error(iniFile + ": cannot open configuration file");
-		std::stringstream contents;
-		contents << in.rdbuf();
-		cfg.setContent(contents.str());
+		cfg = loadIniFile(iniFile);
+		for (const auto& key : pathKeys) makeAbsolute(cfg, key, std::filesystem::path(iniFile).parent_path());
 	}
 	for (const auto& text : overrides)
 	{
 		const auto o = parseConfigOverride(text);
 		cfg.write(o.section, o.key, o.value);
+		for (const auto& key : pathKeys)
+			if (key.section == o.section && key.key == o.key) makeAbsolute(cfg, key, std::filesystem::current_path());
 	}
 	return cfg;
-}
-
-void resolvePathNextToIni(mrpt::config::CConfigFileMemory& cfg, const std::string& section, const std::string& key,
-						  const std::string& iniFile)
-{
-	const std::string value = cfg.read_string(section, key, "");
-	if (value.empty() || iniFile.empty() || std::filesystem::path(value).is_absolute()) return;
-	const auto besideIni = std::filesystem::path(iniFile).parent_path() / value;
-	if (std::filesystem::exists(besideIni)) cfg.write(section, key, besideIni.string());
 }
 
 }  // namespace hslam::common

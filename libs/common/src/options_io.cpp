@@ -16,12 +16,30 @@ std::string joined(const std::vector<std::string>& items)
 	return out;
 }
 
-std::string formatReal(double value)
+std::string formatReal(double value, int precision)
 {
 	std::ostringstream os;
-	os.precision(10);
+	os.precision(precision);
 	os << value;
 	return os.str();
+}
+
+std::string formatReal(double value) { return formatReal(value, 10); }
+
+/** The shortest text (at least 10 significant digits) of `shown` that the
+ * reader turns back into exactly `stored` (`toStored` is the reader's
+ * conversion), so a saved configuration reloads bit for bit. */
+template <class TConvert>
+std::string formatExactly(double shown, double stored, TConvert toStored)
+{
+	if (!std::isfinite(shown)) return formatReal(shown, 10);
+	for (int precision = 10; precision < 17; ++precision)
+	{
+		const std::string text = formatReal(shown, precision);
+		const auto parsed = tryParseDouble(text);
+		if (parsed && toStored(*parsed) == stored) return text;
+	}
+	return formatReal(shown, 17);
 }
 }  // namespace
 
@@ -129,7 +147,7 @@ CSectionWriter::CSectionWriter(mrpt::config::CConfigFileBase& cfg, std::string s
 
 void CSectionWriter::real(const std::string& key, double& value, double, double)
 {
-	m_cfg.write(m_section, key, formatReal(value));
+	m_cfg.write(m_section, key, formatExactly(value, value, [](double v) { return v; }));
 }
 void CSectionWriter::integer(const std::string& key, int& value, int, int) { m_cfg.write(m_section, key, std::to_string(value)); }
 void CSectionWriter::flag(const std::string& key, bool& value) { m_cfg.write(m_section, key, value ? "true" : "false"); }
@@ -139,7 +157,8 @@ void CSectionWriter::choice(const std::string& key, std::string& value, const st
 }
 void CSectionWriter::degrees(const std::string& key, double& radians, double, double)
 {
-	m_cfg.write(m_section, key, formatReal(radians * 180.0 / M_PI));
+	m_cfg.write(m_section, key,
+				formatExactly(radians * 180.0 / M_PI, radians, [](double deg) { return deg * M_PI / 180.0; }));
 }
 void CSectionWriter::text(const std::string& key, std::string& value) { m_cfg.write(m_section, key, value); }
 

@@ -1,30 +1,25 @@
+#include <hslam/common/config_overrides.h>
+#include <hslam/common/ini_file.h>
 #include <hslam/common/options_io.h>
 #include <hslam/dynamic/dynamic_profiles.h>
-#include <mrpt/config/CConfigFile.h>
-#include <mrpt/config/CConfigFileMemory.h>
-
-#include <filesystem>
 
 namespace hslam::dynamic
 {
-namespace
-{
-void requireFile(const std::string& path)
-{
-	if (!std::filesystem::is_regular_file(path)) throw common::config_error(path + ": no such file");
-}
-}  // namespace
-
-CDynamicObjectFilter::TOptions loadDynamicOptions(const std::string& profileIni, const std::string& configFile)
+CDynamicObjectFilter::TOptions loadDynamicOptions(const std::vector<std::string>& iniFiles)
 {
 	CDynamicObjectFilter::TOptions options;
-	mrpt::config::CConfigFileMemory profile(profileIni);
-	common::loadOptions(options, profile, "dynamic_objects");
-	if (!configFile.empty())
+	for (const auto& file : iniFiles)
 	{
-		requireFile(configFile);
-		mrpt::config::CConfigFile cfg(configFile);
-		common::loadOptions(options, cfg, "dynamic_objects");
+		if (file.empty()) continue;
+		const auto cfg = common::loadConfigWithOverrides(file, {}, {{"dynamic_objects", "classifier_model"}});
+		try
+		{
+			common::loadOptions(options, cfg, "dynamic_objects");
+		}
+		catch (const common::config_error& e)
+		{
+			throw common::config_error(file + ": " + e.what());
+		}
 	}
 	return options;
 }
@@ -34,9 +29,15 @@ CLegClassifier::TTrainOptions loadLegTrainOptions(const std::string& configFile)
 	CLegClassifier::TTrainOptions options;
 	if (!configFile.empty())
 	{
-		requireFile(configFile);
-		mrpt::config::CConfigFile cfg(configFile);
-		common::loadOptions(options, cfg, "leg_classifier");
+		const auto cfg = common::loadIniFile(configFile);
+		try
+		{
+			common::loadOptions(options, cfg, "leg_classifier");
+		}
+		catch (const common::config_error& e)
+		{
+			throw common::config_error(configFile + ": " + e.what());
+		}
 	}
 	return options;
 }

@@ -1,5 +1,6 @@
 /* hslam: line segmentation by the second derivative of the log range
  * (thesis 4.4.2 i-ii; see CDerivativeLineExtractor.h). */
+#include <hslam/common/options_io.h>
 #include <hslam/features/CDerivativeLineExtractor.h>
 #include <hslam/features/segment_ops.h>
 
@@ -128,6 +129,11 @@ TLineSegmentList CDerivativeLineExtractor::extract(const common::TRangeData& sca
 						   m_options.max_fit_rms_m);
 	markOccludedEnds(scan, lines);
 	return lines;
+}
+
+void CDerivativeLineExtractor::saveOptions(mrpt::config::CConfigFileBase& out, const std::string& section) const
+{
+	hslam::common::saveOptions(m_options, out, section);
 }
 
 }  // namespace hslam::features

@@ -1,5 +1,6 @@
 /* hslam: iterative end point fit with collinear merge (thesis 4.4.3 i; see
  * CIepLineExtractor.h). */
+#include <hslam/common/options_io.h>
 #include <hslam/features/CIepLineExtractor.h>
 #include <hslam/features/scan_points.h>
 #include <hslam/features/segment_ops.h>
@@ -27,6 +28,11 @@ TLineSegmentList CIepLineExtractor::extract(const common::TRangeData& scan) cons
 		segmentsFromRanges(points, ranges, static_cast<size_t>(m_options.min_points), m_options.min_length_m);
 	markOccludedEnds(scan, lines);
 	return lines;
+}
+
+void CIepLineExtractor::saveOptions(mrpt::config::CConfigFileBase& out, const std::string& section) const
+{
+	hslam::common::saveOptions(m_options, out, section);
 }
 
 }  // namespace hslam::features

@@ -1,4 +1,5 @@
 /* hslam: RANSAC lines by MRPT, cut into segments (see CRansacLineExtractor.h). */
+#include <hslam/common/options_io.h>
 #include <hslam/features/CRansacLineExtractor.h>
 #include <hslam/features/scan_points.h>
 #include <hslam/features/segment_ops.h>
@@ -84,6 +85,11 @@ TLineSegmentList CRansacLineExtractor::extract(const common::TRangeData& scan) c
 			  [](const TLineSegment& a, const TLineSegment& b) { return a.first_beam < b.first_beam; });
 	markOccludedEnds(scan, out);
 	return out;
+}
+
+void CRansacLineExtractor::saveOptions(mrpt::config::CConfigFileBase& out, const std::string& section) const
+{
+	hslam::common::saveOptions(m_options, out, section);
 }
 
 }  // namespace hslam::features

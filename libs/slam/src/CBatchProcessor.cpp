@@ -1,10 +1,10 @@
 #include <hslam/common/CProgressBar.h>
-#include <hslam/common/config_overrides.h>
 #include <hslam/common/options_io.h>
 #include <hslam/eval/evaluate_trajectory.h>
 #include <hslam/eval/evaluation_json.h>
 #include <hslam/eval/evaluation_table.h>
 #include <hslam/slam/CBatchProcessor.h>
+#include <hslam/slam/mapping_config.h>
 #include <hslam/slam/pose_plots.h>
 #include <hslam/slam/run_report.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -24,22 +24,12 @@ CBatchProcessor::CBatchProcessor(TBatchRequest request, std::ostream& out, std::
 {
 }
 
-std::vector<std::string> CBatchProcessor::knownSections()
-{
-	auto sections = CMappingPipeline::sections();
-	sections.push_back("output");
-	return sections;
-}
-
 TBatchResult CBatchProcessor::run()
 {
 	const auto started = std::chrono::steady_clock::now();
-	auto cfg = common::loadConfigWithOverrides(m_request.config_file, m_request.overrides);
-	common::resolvePathNextToIni(cfg, "dynamic_objects", "classifier_model", m_request.config_file);
-	common::checkKnownSections(cfg, knownSections());
-	CMappingPipeline pipeline(cfg);
-	TOutputOptions outputOptions;
-	common::loadOptions(outputOptions, cfg, "output");
+	const auto config = TMappingConfig::fromConfig(m_request.config_file, m_request.overrides);
+	CMappingPipeline pipeline(config.ini);
+	const TOutputOptions& outputOptions = config.output;
 	if (outputOptions.write_sensor_maps) pipeline.keepSensorMaps();
 	if (outputOptions.dynamic_debug_images)
 		pipeline.keepDynamicDebugFrames(static_cast<size_t>(outputOptions.dynamic_debug_max_images));
@@ -108,7 +98,8 @@ void CBatchProcessor::writeEffectiveConfig(const CMappingPipeline& pipeline, con
 	common::saveOptions(outputOptions, effective, "output");
 	const std::string path = m_request.output_dir + "/config_used.ini";
 	std::ofstream f(path);
-	f << "; Effective configuration of this run (defaults and --set overrides included).\n"
+	f << "; Effective configuration of this run: every key the run read, defaults and --set overrides\n"
+	  << "; included, file paths absolute. hslam-process -c config_used.ini reproduces the run.\n"
 	  << effective.getContent();
 	if (!f) throw std::runtime_error(path + ": cannot write");
 }

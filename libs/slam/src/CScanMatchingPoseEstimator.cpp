@@ -47,7 +47,7 @@ void CScanMatchingPoseEstimator::saveOptions(mrpt::config::CConfigFileBase& out)
 	common::saveOptions(m_icp.options(), out, "icp");
 	common::saveOptions(m_keyframes.options(), out, "icp_map");
 	common::saveOptions(m_extraction, out, "line_extraction");
-	// [line_extraction_<method>]: the extractor's keys as written by the user (defaults otherwise)
+	m_extractor->saveOptions(out, features::lineExtractorSection(m_extraction.method));
 }
 
 mrpt::poses::CPose2D CScanMatchingPoseEstimator::currentPose() const { return toPose(m_ukf.pose()); }

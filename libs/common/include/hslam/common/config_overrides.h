@@ -16,16 +16,21 @@ struct TConfigOverride
 /** Parses "SECTION.KEY=VALUE"; throws config_error naming the bad text. */
 TConfigOverride parseConfigOverride(const std::string& text);
 
-/** Loads an INI file into memory (throws config_error naming the file if it
- * cannot be read) and applies the overrides in order. */
-mrpt::config::CConfigFileMemory loadConfigWithOverrides(
-	const std::string& iniFile, const std::vector<std::string>& overrides);
+/** A key whose value is a file path. */
+struct TPathKey
+{
+	std::string section, key;
+};
 
-/** A file path in [section] key that is relative is taken relative to the
- * folder of `iniFile` when the file exists there (so an INI can name files
- * beside it), else as given (relative to the working directory); the value
- * in `cfg` is rewritten accordingly. Empty values are left alone. */
-void resolvePathNextToIni(mrpt::config::CConfigFileMemory& cfg, const std::string& section, const std::string& key,
-						  const std::string& iniFile);
+/** Loads `iniFile` with the strict reader (loadIniFile(); empty name: no
+ * file, all defaults), then applies the overrides in order. Every non-empty
+ * value of `pathKeys` becomes an absolute path: one written in the INI file
+ * is taken relative to the INI's folder (never the working directory), one
+ * given in an override relative to the working directory, as any path on a
+ * command line. Throws config_error naming the file and line, or the bad
+ * override. */
+mrpt::config::CConfigFileMemory loadConfigWithOverrides(const std::string& iniFile,
+														const std::vector<std::string>& overrides,
+														const std::vector<TPathKey>& pathKeys = {});
 
 }  // namespace hslam::common

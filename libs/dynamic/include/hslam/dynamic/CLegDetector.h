@@ -16,7 +16,7 @@
  *     edge of the band, plus one mixed pixel at each end). The thesis table
  *     (1 deg scanner: 10 beams under 1.0 m, 8 to 1.2 m, 6 to 1.5 m, 4 to
  *     2.2 m, 3 beyond) is the lower bound with a single width 0.18 m and no
- *     upper bound (kThesisProfileIni). One width is wrong for real legs:
+ *     upper bound (config_ini/hslam-legs-thesis.ini). One width is wrong for real legs:
  *     with 0.18 m a 12 cm leg never has enough beams beyond 1 m. The default
  *     range 0.08-0.20 m is the thesis' own leg width window (figure 150,
  *     rule 3), so the two rules agree. Derived that way the bands work for

@@ -109,6 +109,7 @@ class CDerivativeLineExtractor : public CLineExtractor
 	std::string name() const override { return "derivative"; }
 	using CLineExtractor::extract;
 	TLineSegmentList extract(const common::TRangeData& scan) const override;
+	void saveOptions(mrpt::config::CConfigFileBase& out, const std::string& section) const override;
 
 	/** Steps 1-3 only: the piece boundaries of the valid points (each range
 	 * starts a piece), before the noise filters. Exposed for tests and plots. */

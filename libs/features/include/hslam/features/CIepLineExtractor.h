@@ -47,6 +47,7 @@ class CIepLineExtractor : public CLineExtractor
 	std::string name() const override { return "iep"; }
 	using CLineExtractor::extract;
 	TLineSegmentList extract(const common::TRangeData& scan) const override;
+	void saveOptions(mrpt::config::CConfigFileBase& out, const std::string& section) const override;
 
 	const TOptions& options() const { return m_options; }
 

@@ -30,6 +30,9 @@ class CLineExtractor
 	{
 		return extract(common::makeRangeData(scan));
 	}
+	/** Writes every option into `section` (the inverse of loading them
+	 * there), so a run's config_used.ini holds the extractor's settings. */
+	virtual void saveOptions(mrpt::config::CConfigFileBase& out, const std::string& section) const = 0;
 };
 
 /** The method names createLineExtractor() accepts: derivative, iep, ransac. */

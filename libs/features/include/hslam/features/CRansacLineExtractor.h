@@ -53,6 +53,7 @@ class CRansacLineExtractor : public CLineExtractor
 	std::string name() const override { return "ransac"; }
 	using CLineExtractor::extract;
 	TLineSegmentList extract(const common::TRangeData& scan) const override;
+	void saveOptions(mrpt::config::CConfigFileBase& out, const std::string& section) const override;
 
 	const TOptions& options() const { return m_options; }
 

@@ -41,12 +41,11 @@ class CBatchProcessor
 	/** `out` gets the summary, `err` the progress bar and error messages. */
 	CBatchProcessor(TBatchRequest request, std::ostream& out, std::ostream& err);
 
-	/** Runs the whole job. Configuration errors throw (common::config_error);
+	/** Runs the whole job. The configuration is read by
+	 * TMappingConfig::fromConfig (mapping_config.h); its errors throw
+	 * (common::config_error);
 	 * input faults are reported in the result after writing the outputs. */
 	TBatchResult run();
-
-	/** Sections accepted in the INI file. */
-	static std::vector<std::string> knownSections();
 
    private:
 	void readRawlog(CMappingPipeline& pipeline, TBatchResult& result);

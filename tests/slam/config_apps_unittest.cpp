@@ -1,0 +1,140 @@
+/* hslam tests: malformed INI files given to the real apps. Each is refused
+ * with exit code 1 and a message naming the file and the line, before any
+ * output is created (MRPT alone would read them as empty or partial
+ * configurations and run with defaults). */
+#include <gtest/gtest.h>
+#include <hslam/testing/temp_dir.h>
+#include <hslam/testing/test_paths.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace
+{
+const std::string kSource = HSLAM_SOURCE_DIR;
+const std::string kBin = HSLAM_BIN_DIR;
+
+std::string readText(const std::string& path)
+{
+	std::ifstream in(path);
+	std::stringstream text;
+	text << in.rdbuf();
+	return text.str();
+}
+
+void writeFile(const std::string& path, const std::string& bytes)
+{
+	std::ofstream(path, std::ios::binary) << bytes;
+}
+
+/** Runs `command` from the repository root, stderr into `errFile`. */
+int run(const std::string& command, const std::string& errFile)
+{
+	return hslam::testing::runCommand("cd '" + kSource + "' && " + command + " > /dev/null 2> '" + errFile + "'");
+}
+
+struct TBadIni
+{
+	const char* name;
+	std::string bytes;
+	std::string message;  //!< expected after "FILE:"
+};
+
+std::vector<TBadIni> badInis()
+{
+	return {
+		{"binary", std::string("[grid]\nresolution_m = 0.1\n\x1f\x8b\x08\0\0", 31),
+		 "3: not an INI text file (control byte 0x1f at column 1)"},
+		{"key_before_section", "resolution_m = 0.1\n[grid]\n", "1: key 'resolution_m' comes before any [section]"},
+		{"no_equals", "[grid]\nresolution_m 0.1\n",
+		 "2: 'resolution_m 0.1' is neither '[section]' nor 'key = value' nor a comment (; # //)"},
+		{"repeated_key", "[grid]\nresolution_m = 0.1\nresolution_m = 0.05\n",
+		 "3: key 'resolution_m' appears again in [grid] (first at line 2)"},
+		{"repeated_section", "[grid]\nresolution_m = 0.1\n[laser_model]\n[grid]\n",
+		 "4: section [grid] appears again (first at line 1); merge the two into one"},
+		{"misspelt_section", "[grid]\nresolution_m = 0.1\n\n[laser_modle]\nmax_range_m = 5\n",
+		 "4: unknown section [laser_modle] (known sections: process, grid, laser_model"},
+	};
+}
+}  // namespace
+
+TEST(ConfigApps, HslamProcessRefusesEachMalformedIni)
+{
+	hslam::testing::CTempDir dir;
+	for (const auto& bad : badInis())
+	{
+		const std::string ini = dir.file(std::string(bad.name) + ".ini"), out = dir.file(std::string(bad.name) + "_out");
+		writeFile(ini, bad.bytes);
+		const int rc = run(kBin + "/hslam-process -q -c '" + ini + "' -i rawlog_samples/floor/sim.rawlog -o '" + out + "'",
+						   dir.file("err.txt"));
+		const std::string err = readText(dir.file("err.txt"));
+		EXPECT_EQ(rc, 1) << bad.name << ": " << err;
+		EXPECT_NE(err.find("hslam-process: error: " + ini + ":" + bad.message), std::string::npos) << bad.name << ": " << err;
+		EXPECT_FALSE(std::filesystem::exists(out)) << bad.name << ": output written despite the bad configuration";
+	}
+}
+
+TEST(ConfigApps, GrabberRejectsAMisspeltMapConfigSection)
+{
+	// The grabber INI is good (the Pioneer + LMS200 recording set-up); the
+	// pipeline INI of --map-config has [laser_modle]. The grabber stops
+	// before opening any device or creating the rawlog.
+	hslam::testing::CTempDir dir;
+	const auto& bad = badInis().back();
+	writeFile(dir.file("map.ini"), bad.bytes);
+	const int rc = run(kBin + "/hslam-grabber config_ini/grabber-pioneer-lms200.ini -o '" + dir.file("rec.rawlog") +
+						   "' --duration 1 --map-out '" + dir.file("map") + "' --map-config '" + dir.file("map.ini") + "'",
+					   dir.file("err.txt"));
+	const std::string err = readText(dir.file("err.txt"));
+	EXPECT_EQ(rc, 1) << err;
+	EXPECT_NE(err.find("hslam-grabber: " + dir.file("map.ini") + ":" + bad.message), std::string::npos) << err;
+	EXPECT_FALSE(std::filesystem::exists(dir.file("rec.rawlog")));
+	EXPECT_FALSE(std::filesystem::exists(dir.file("map")));
+}
+
+TEST(ConfigApps, GrabberMapConfigGoesThroughTheSameChecksAsHslamProcess)
+{
+	// A repeated key in --map-config and a binary grabber INI: both named by file and line.
+	hslam::testing::CTempDir dir;
+	const auto& repeated = badInis()[3];
+	writeFile(dir.file("map.ini"), repeated.bytes);
+	int rc = run(kBin + "/hslam-grabber config_ini/grabber-pioneer-lms200.ini -o '" + dir.file("rec.rawlog") +
+					 "' --map-out '" + dir.file("map") + "' --map-config '" + dir.file("map.ini") + "'",
+				 dir.file("err.txt"));
+	EXPECT_EQ(rc, 1);
+	EXPECT_NE(readText(dir.file("err.txt")).find(dir.file("map.ini") + ":" + repeated.message), std::string::npos)
+		<< readText(dir.file("err.txt"));
+	const auto& binary = badInis()[0];
+	writeFile(dir.file("grab.ini"), binary.bytes);
+	rc = run(kBin + "/hslam-grabber '" + dir.file("grab.ini") + "' -o '" + dir.file("rec.rawlog") + "'",
+			 dir.file("err.txt"));
+	EXPECT_EQ(rc, 1);
+	EXPECT_NE(readText(dir.file("err.txt")).find(dir.file("grab.ini") + ":" + binary.message), std::string::npos)
+		<< readText(dir.file("err.txt"));
+	EXPECT_FALSE(std::filesystem::exists(dir.file("rec.rawlog")));
+}
+
+TEST(ConfigApps, OtherAppsReadIniFilesThroughTheSameReader)
+{
+	hslam::testing::CTempDir dir;
+	const auto& bad = badInis()[1];  // key before any section
+	writeFile(dir.file("bad.ini"), bad.bytes);
+	const std::string expected = dir.file("bad.ini") + ":" + bad.message;
+	const std::vector<std::pair<std::string, std::string>> commands{
+		{"hslam-simulate", kBin + "/hslam-simulate -q -c '" + dir.file("bad.ini") + "' -o '" + dir.file("sim") + "'"},
+		{"hslam-bench", kBin + "/hslam-bench legs-sim -c '" + dir.file("bad.ini") + "' --out '" + dir.file("b") + "'"},
+		{"hslam-legs-train", kBin + "/hslam-legs-train -c '" + dir.file("bad.ini") + "' -o '" + dir.file("m.yml") + "'"},
+	};
+	for (const auto& [app, command] : commands)
+	{
+		EXPECT_EQ(run(command, dir.file("err.txt")), 1) << app;
+		const std::string err = readText(dir.file("err.txt"));
+		EXPECT_NE(err.find(expected), std::string::npos) << app << ": " << err;
+	}
+	EXPECT_FALSE(std::filesystem::exists(dir.file("sim")));
+	EXPECT_FALSE(std::filesystem::exists(dir.file("m.yml")));
+}
