@@ -83,6 +83,10 @@ std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> readScans(const std::string
  * holding sim.rawlog, ground_truth.tum, people.csv.gz, beam_labels.csv.gz. */
 int runLegsSimSuite(const std::string& dataDir, const std::string& outDir, const std::string& configFile);
 
+/** The default pipeline (hslam-process) against MRPT's icp-slam, CPU ms per
+ * scan and ATE (bench_pipeline.cpp); parses its own options from argv. */
+int runPipelineSuite(int argc, char** argv);
+
 /** ARCOS parser, driver and recorders against the emulators (bench_hwdrivers.cpp). */
 int runHwdriversSuite(int repetitions);
 

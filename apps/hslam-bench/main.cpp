@@ -9,6 +9,7 @@
  *   hslam-bench legs --data DIR [--out DIR] [--config FILE]
  *   hslam-bench legs-sim [--data rawlog_samples] [--out DIR] [--config FILE]
  *   hslam-bench hwdrivers [--repetitions N]
+ *   hslam-bench pipeline [-r RAWLOG ...] [-g GROUND_TRUTH ...] [-n N]   (own options: bench_pipeline.cpp)
  */
 #include <hslam/common/version.h>
 #include "bench_common.h"
@@ -35,6 +36,7 @@ int main(int argc, char** argv)
 										false, "", "file", cmd);
 	try
 	{
+		if (argc > 1 && std::string(argv[1]) == "pipeline") return hslam::bench::runPipelineSuite(argc, argv);
 		if (!cmd.parse(argc, argv)) return 0;  // --help or --version was printed
 		if (suite.getValue() == "lines") return hslam::bench::runLinesSuite(rawlogs.getValue(), std::max(1, repetitions.getValue()));
 		std::vector<std::string> inputs = rawlogs.getValue();

@@ -1,6 +1,8 @@
 /* hslam-simulate: CSimulationWriter. */
 #include "CSimulationWriter.h"
 
+#include <hslam/io/carmen_observations.h>
+
 #include <iomanip>
 #include <stdexcept>
 
@@ -31,6 +33,13 @@ CSimulationWriter::CSimulationWriter(const std::string& dir, size_t peopleCount)
 void CSimulationWriter::onOdometry(const mrpt::obs::CObservationOdometry& obs, const hslam::sim::TSimulationFrame&)
 {
 	m_rawlog.write(obs);
+}
+
+void CSimulationWriter::onOdometryGap(const hslam::sim::TSimulationFrame& frame)
+{
+	// Same marker text as the CARMEN importer (hslam::slam::COdometryTracker::kGapMarker).
+	m_rawlog.write(*hslam::io::makeComment(
+		"ODOMETRY_GAP", "ODOMETRY_GAP: simulated odometry reading withheld ([odometry] fault = drop)", frame.t_s));
 }
 
 void CSimulationWriter::onLaserScan(const mrpt::obs::CObservation2DRangeScan& obs,

@@ -24,6 +24,8 @@ class CSimulationWriter : public hslam::sim::ISimulationSink
 	void onSonar(const mrpt::obs::CObservationRange& obs, const std::vector<hslam::sim::TSonarEcho>& echoes,
 				 const hslam::sim::TSimulationFrame& frame) override;
 
+	/** Writes an ODOMETRY_GAP comment, as hslam-carmen2rawlog does for missing odometry. */
+	void onOdometryGap(const hslam::sim::TSimulationFrame& frame) override;
 	void onWaypointReached(size_t index, const hslam::sim::TSimulationFrame& frame) override;
 
 	/** Closes the rawlog and writes the TUM files. */

@@ -88,7 +88,9 @@ int simulate(const std::string& iniFile, const std::vector<std::string>& overrid
 		throw std::runtime_error(outDir + "/overview.png: cannot write");
 
 	const auto& truth = sim.robot().truePose();
-	const auto& odo = sim.robot().odometryPose();
+	// The odometry as reported (after [odometry] fault_*) at the last scan.
+	const auto& reported = writer.tracks().odometry_path;
+	const auto odo = reported.empty() ? sim.robot().odometryPose() : reported.back();
 	std::ostringstream summary;
 	summary << std::fixed << std::setprecision(3) << "duration_s=" << sim.elapsed_s() << "\n"
 			<< "observations=" << writer.rawlog().written() << "\n";

@@ -66,6 +66,8 @@ CSimulator::CSimulator(const TSimulatorConfig& config, TScene scene)
 	  m_scene(std::move(scene)),
 	  m_robot(config.robot.kinematics,
 			  mrpt::math::TPose2D{config.robot.start_x_m, config.robot.start_y_m, config.robot.start_yaw_rad}),
+	  m_odometryFault(config.odometry.faults,
+					  mrpt::math::TPose2D{config.robot.start_x_m, config.robot.start_y_m, config.robot.start_yaw_rad}),
 	  m_laser(config.laser),
 	  m_sonar(config.sonar),
 	  m_rngRobot(seededStream(config.simulation.seed, 1)),
@@ -129,7 +131,7 @@ TSimulationFrame CSimulator::frameNow() const
 	f.t_s = timestamp_s();
 	f.elapsed_s = elapsed_s();
 	f.true_pose = m_robot.truePose();
-	f.odometry_pose = m_robot.odometryPose();
+	f.odometry_pose = m_odometryFault.reportedPose();
 	f.people = peopleNow();
 	return f;
 }
@@ -159,7 +161,9 @@ void CSimulator::emitSensors(ISimulationSink& sink)
 	if (!odoDue && !laserDue && !sonarDue && !cameraDue) return;
 	const TSimulationFrame frame = frameNow();
 	const auto stamp = mrpt::Clock::fromDouble(frame.t_s);
-	if (odoDue)
+	if (odoDue && m_odometryFault.readingsDropped(frame.elapsed_s))
+		sink.onOdometryGap(frame);
+	else if (odoDue)
 	{
 		mrpt::obs::CObservationOdometry odo;
 		odo.sensorLabel = m_cfg.odometry.label;
@@ -167,7 +171,7 @@ void CSimulator::emitSensors(ISimulationSink& sink)
 		odo.odometry = mrpt::poses::CPose2D(m_cfg.odometry.quantize ? pioneerQuantized(frame.odometry_pose)
 																	: frame.odometry_pose);
 		odo.hasVelocities = true;
-		odo.velocityLocal = m_robot.odometryVelocity();
+		odo.velocityLocal = m_odometryFault.reportedVelocity(frame.elapsed_s, m_robot.odometryVelocity());
 		sink.onOdometry(odo, frame);
 	}
 	if (laserDue)
@@ -207,6 +211,7 @@ void CSimulator::step(ISimulationSink& sink)
 	const TVelocityCommand cmd = controllerCommand(sink);
 	m_robot.step(cmd.v_mps, cmd.w_rad_s, m_cfg.simulation.physics_dt_s, m_rngRobot);
 	++m_tick;
+	m_odometryFault.update(elapsed_s(), m_robot.odometryPose());
 }
 
 bool CSimulator::done() const

@@ -14,6 +14,7 @@
 
 #include <hslam/sim/CDiffDriveRobot.h>
 #include <hslam/sim/CLaserSimulator.h>
+#include <hslam/sim/COdometryFault.h>
 #include <hslam/sim/CPathFollower.h>
 #include <hslam/sim/CSonarSimulator.h>
 #include <hslam/sim/ICameraModel.h>
@@ -89,6 +90,7 @@ struct TOdometryOptions  //!< [odometry]
 	double rate_hz = 10;  //!< Pioneer SIP cycle (100 ms)
 	bool quantize = true;  //!< report x, y in whole mm and heading in ARCOS angle units (2 pi / 4096)
 	std::string label = "ODOMETRY";
+	TOdometryFaultOptions faults;  //!< frozen / missing readings (COdometryFault.h)
 
 	template <class V>
 	void visit(V& v)
@@ -96,6 +98,7 @@ struct TOdometryOptions  //!< [odometry]
 		v.real("rate_hz", rate_hz, 0.1, 100.0);
 		v.flag("quantize", quantize);
 		v.text("label", label);
+		faults.visit(v);
 	}
 };
 
@@ -143,7 +146,8 @@ struct TSimulationFrame
 {
 	double t_s = 0;  //!< timestamp (UNIX s) of the observation
 	double elapsed_s = 0;  //!< since the start
-	mrpt::math::TPose2D true_pose, odometry_pose;
+	mrpt::math::TPose2D true_pose;
+	mrpt::math::TPose2D odometry_pose;  //!< as the odometry reports it (after [odometry] fault_*)
 	std::vector<TPersonState> people;
 };
 
@@ -161,6 +165,8 @@ class ISimulationSink
 	{
 	}
 	virtual void onCamera(const mrpt::obs::CObservation& obs, const TSimulationFrame& frame) {}
+	/** An odometry reading was due but [odometry] fault = drop withheld it. */
+	virtual void onOdometryGap(const TSimulationFrame& frame) {}
 	/** The waypoint follower reached waypoint `index` (of the repeated list);
 	 * with follow = odometry this is where UMBmark reads the true end pose. */
 	virtual void onWaypointReached(size_t index, const TSimulationFrame& frame) {}
@@ -202,6 +208,7 @@ class CSimulator
 	TScene m_scene;
 	std::vector<CWalkingPerson> m_people;
 	CDiffDriveRobot m_robot;
+	COdometryFault m_odometryFault;
 	CLaserSimulator m_laser;
 	CSonarSimulator m_sonar;
 	std::optional<CPathFollower> m_follower;

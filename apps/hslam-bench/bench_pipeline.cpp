@@ -1,0 +1,373 @@
+/* hslam-bench pipeline: the whole default pipeline (the hslam-process
+ * binary, config_ini/hslam-default.ini) against MRPT's icp-slam (stock
+ * config_files/icp-slam/icp-slam_demo_classic.ini, windows and 3D output
+ * off) on the same rawlogs, in paired runs on the same machine (issue 12).
+ *
+ *   hslam-bench pipeline [-r RAWLOG ...] [-g GROUND_TRUTH.tum ...] [-n N] [-c INI] [--out DIR]
+ *
+ * CPU time (user + system, from getrusage of the child processes) of each
+ * whole process; start-up is excluded for BOTH programs alike by also running
+ * each on a 1-scan prefix of the rawlog (the entries up to the first scan)
+ * and taking ms per scan = (CPU(full) - CPU(prefix)) / (scans - 1). What
+ * remains is reading, matching, mapping and writing the outputs. Each figure
+ * is the minimum of N runs (default 3), runs of the two programs alternate.
+ * With a ground truth (-g, paired with -r by order; else ground_truth.tum or
+ * <stem>.tum beside the rawlog) the ATE RMSE of both is printed, and of raw
+ * odometry (hslam-process with pose_estimation.method = odometry, not timed).
+ * icp-slam's path (log_estimated_path.txt, one pose per rawlog step) is
+ * mapped to the scans' timestamps by reading the rawlog step by step with
+ * the same MRPT call icp-slam uses. Runs and trajectories stay in --out. */
+#include "bench_common.h"
+
+#include <hslam/common/tum_trajectory.h>
+#include <hslam/eval/evaluate_trajectory.h>
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/obs/CRawlog.h>
+#include <mrpt/serialization/CArchive.h>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+namespace hslam::bench
+{
+namespace
+{
+namespace fs = std::filesystem;
+const char* kIcpSlamStockIni = "/usr/share/mrpt/config_files/icp-slam/icp-slam_demo_classic.ini";
+
+/** One rawlog as both programs see it. */
+struct TBenchRawlog
+{
+	std::string name, path, ground_truth;  //!< ground_truth empty = none
+	size_t scans = 0;
+	std::vector<std::optional<double>> step_scan_time_s;  //!< per icp-slam step: the scan's time, if it has one
+};
+
+/** CPU seconds (best of the repetitions) of the full run and of the prefix run. */
+struct TProgramTimes
+{
+	double full_s = 1e300, prefix_s = 1e300;
+	double msPerScan(size_t scans) const { return 1000.0 * (full_s - prefix_s) / static_cast<double>(scans - 1); }
+};
+
+struct TBenchRow
+{
+	TBenchRawlog log;
+	TProgramTimes ours, icp;
+	std::optional<double> ate_odometry_m, ate_ours_m, ate_icp_m;
+	std::string icp_note;
+};
+
+std::string shellQuote(const std::string& s)
+{
+	std::string q = "'";
+	for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+	return q + "'";
+}
+
+/** Runs `command` (output to `logFile`) and returns the CPU time of the
+ * child processes; throws naming the command and log on failure. */
+double childCpuSeconds(const std::string& command, const std::string& logFile)
+{
+	const auto cpu = [] {
+		rusage u{};
+		getrusage(RUSAGE_CHILDREN, &u);
+		return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+	};
+	const double before = cpu();
+	const int status = std::system((command + " </dev/null >" + shellQuote(logFile) + " 2>&1").c_str());
+	if (status != 0) throw std::runtime_error("command failed (status " + std::to_string(status) + "): " + command +
+											  " (see " + logFile + ")");
+	return cpu() - before;
+}
+
+/** A short name: the folder for <dir>/sim.rawlog, else the file stem. */
+std::string rawlogName(const std::string& path)
+{
+	const fs::path p(path);
+	std::string name = p.stem() == "sim" ? p.parent_path().filename().string() : p.stem().string();
+	std::replace_if(name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)) && c != '-'; }, '_');
+	return name.substr(0, 40);
+}
+
+std::string findGroundTruth(const std::string& rawlog)
+{
+	const fs::path p(rawlog);
+	for (const fs::path& c : {p.parent_path() / "ground_truth.tum", fs::path(p).replace_extension(".tum")})
+		if (fs::exists(c)) return c.string();
+	return "";
+}
+
+std::optional<double> scanTimeOf(const mrpt::obs::CSensoryFrame::Ptr& frame, const mrpt::obs::CObservation::Ptr& obs)
+{
+	using mrpt::obs::CObservation2DRangeScan;
+	if (obs && IS_CLASS(*obs, CObservation2DRangeScan)) return mrpt::Clock::toDouble(obs->timestamp);
+	if (frame)
+		if (const auto scan = frame->getObservationByClass<CObservation2DRangeScan>(); scan)
+			return mrpt::Clock::toDouble(scan->timestamp);
+	return std::nullopt;
+}
+
+/** Reads the rawlog step by step as icp-slam does (same MRPT call), notes the
+ * scan time of every step and writes the entries up to the first scan to `prefixPath`. */
+void readSteps(TBenchRawlog& log, const std::string& prefixPath)
+{
+	mrpt::io::CFileGZInputStream in;
+	if (!in.open(log.path)) throw std::runtime_error(log.path + ": cannot open");
+	auto arch = mrpt::serialization::archiveFrom(in);
+	mrpt::io::CFileGZOutputStream prefixFile(prefixPath);
+	auto prefix = mrpt::serialization::archiveFrom(prefixFile);
+	mrpt::obs::CActionCollection::Ptr actions;
+	mrpt::obs::CSensoryFrame::Ptr frame;
+	mrpt::obs::CObservation::Ptr obs;
+	size_t entry = 0;
+	while (mrpt::obs::CRawlog::getActionObservationPairOrObservation(arch, actions, frame, obs, entry))
+	{
+		const auto t = scanTimeOf(frame, obs);
+		if (log.scans == 0)
+		{
+			if (obs) prefix << *obs;
+			else prefix << *actions << *frame;
+		}
+		log.step_scan_time_s.push_back(t);
+		if (t) ++log.scans;
+	}
+	if (log.scans < 2) throw std::runtime_error(log.path + ": fewer than 2 laser scans");
+}
+
+std::string writeIcpSlamIni(const std::string& rawlog, const std::string& logDir, const std::string& iniPath)
+{
+	if (!fs::exists(kIcpSlamStockIni))
+		throw std::runtime_error(std::string(kIcpSlamStockIni) + " not found (Debian package mrpt-common)");
+	std::ifstream stock(kIcpSlamStockIni);
+	std::stringstream text;
+	text << stock.rdbuf();
+	mrpt::config::CConfigFileMemory cfg(text.str());
+	// I/O only; every algorithm parameter stays stock. LOG_FREQUENCY = 0:
+	// icp-slam would otherwise build (and, with SAVE_3D_SCENE off, discard) a
+	// 3D scene every 50 steps, work that is not SLAM.
+	const std::vector<std::pair<std::string, std::string>> io = {
+		{"rawlog_file", rawlog}, {"logOutput_dir", logDir}, {"SHOW_PROGRESS_3D_REAL_TIME", "0"},
+		{"SAVE_3D_SCENE", "0"}, {"SAVE_POSE_LOG", "0"}, {"LOG_FREQUENCY", "0"}};
+	for (const auto& [key, value] : io) cfg.write("MappingApplication", key, value);
+	std::ofstream(iniPath) << cfg.getContent();
+	return iniPath;
+}
+
+/** icp-slam's "step x y yaw" rows at the steps that hold a scan, as TUM rows. */
+common::TTrajectory2D icpSlamTrajectory(const std::string& pathFile, const TBenchRawlog& log)
+{
+	std::ifstream f(pathFile);
+	if (!f) throw std::runtime_error(pathFile + ": missing (icp-slam wrote no path)");
+	common::TTrajectory2D out;
+	for (std::string line; std::getline(f, line);)
+	{
+		std::istringstream row(line);
+		long step = -1;
+		mrpt::math::TPose2D p;
+		if (!(row >> step >> p.x >> p.y >> p.phi)) continue;
+		if (step >= 0 && static_cast<size_t>(step) < log.step_scan_time_s.size() && log.step_scan_time_s[step])
+			out.push_back({*log.step_scan_time_s[step], p});
+	}
+	return out;
+}
+
+/** Paths of one benchmark run. */
+struct TBenchSetup
+{
+	std::string hslam_process, config, out_dir;
+	int repetitions = 3;
+};
+
+std::string processCommand(const TBenchSetup& setup, const std::string& rawlog, const std::string& outDir,
+						   const std::string& extra = "")
+{
+	return shellQuote(setup.hslam_process) + " -q -c " + shellQuote(setup.config) + " -i " + shellQuote(rawlog) +
+		   " -o " + shellQuote(outDir) + extra;
+}
+
+std::optional<double> ateOf(const std::string& groundTruth, const std::string& trajectory)
+{
+	if (groundTruth.empty()) return std::nullopt;
+	return eval::evaluateTumFiles(groundTruth, trajectory).ate.position_m.rmse;
+}
+
+/** Times both programs on one rawlog (and its 1-scan prefix), then scores them. */
+TBenchRow benchOneRawlog(const TBenchSetup& setup, TBenchRawlog log)
+{
+	const std::string dir = setup.out_dir + "/" + log.name;
+	fs::create_directories(dir);
+	const std::string prefix = dir + "/first-scan.rawlog";
+	readSteps(log, prefix);
+	TBenchRow row;
+	const std::string icpFull = writeIcpSlamIni(fs::absolute(log.path).string(), dir + "/icp-slam", dir + "/icp-slam.ini");
+	const std::string icpPrefix = writeIcpSlamIni(prefix, dir + "/icp-slam-prefix", dir + "/icp-slam-prefix.ini");
+	for (int r = 0; r < setup.repetitions; ++r)
+	{
+		std::cerr << "\r" << log.name << ": run " << r + 1 << "/" << setup.repetitions << std::flush;
+		auto& o = row.ours;
+		auto& i = row.icp;
+		o.full_s = std::min(o.full_s, childCpuSeconds(processCommand(setup, log.path, dir + "/hslam"), dir + "/hslam.log"));
+		i.full_s = std::min(i.full_s, childCpuSeconds("icp-slam " + shellQuote(icpFull), dir + "/icp-slam.log"));
+		o.prefix_s = std::min(o.prefix_s, childCpuSeconds(processCommand(setup, prefix, dir + "/hslam-prefix"),
+														  dir + "/hslam-prefix.log"));
+		i.prefix_s = std::min(i.prefix_s, childCpuSeconds("icp-slam " + shellQuote(icpPrefix), dir + "/icp-slam-prefix.log"));
+	}
+	std::cerr << "\n";
+	if (!log.ground_truth.empty())
+	{
+		childCpuSeconds(processCommand(setup, log.path, dir + "/odometry", " --set pose_estimation.method=odometry"),
+						dir + "/odometry.log");
+		row.ate_odometry_m = ateOf(log.ground_truth, dir + "/odometry/trajectory.tum");
+		row.ate_ours_m = ateOf(log.ground_truth, dir + "/hslam/trajectory.tum");
+		const auto icpPath = icpSlamTrajectory(dir + "/icp-slam/log_estimated_path.txt", log);
+		common::writeTumFile(dir + "/icp-slam.tum", icpPath);
+		try
+		{
+			row.ate_icp_m = ateOf(log.ground_truth, dir + "/icp-slam.tum");
+		}
+		catch (const std::exception& e)
+		{
+			row.icp_note = e.what();
+		}
+	}
+	row.log = std::move(log);
+	return row;
+}
+
+std::string fixedOrDash(const std::optional<double>& v, int digits)
+{
+	if (!v) return "-";
+	std::ostringstream s;
+	s << std::fixed << std::setprecision(digits) << *v;
+	return s.str();
+}
+
+void printTable(const std::vector<TBenchRow>& rows)
+{
+	std::cout << "\nWhole-process CPU ms per scan (start-up excluded: minus a 1-scan run), ATE RMSE (m)\n"
+			  << std::left << std::setw(26) << "rawlog" << std::right << std::setw(7) << "scans" << std::setw(10)
+			  << "ours ms" << std::setw(10) << "icp ms" << std::setw(9) << "speedup" << std::setw(10) << "ATE odo"
+			  << std::setw(10) << "ATE ours" << std::setw(10) << "ATE icp" << "\n";
+	for (const auto& r : rows)
+	{
+		const double ours = r.ours.msPerScan(r.log.scans), icp = r.icp.msPerScan(r.log.scans);
+		std::cout << std::left << std::setw(26) << r.log.name.substr(0, 25) << std::right << std::setw(7) << r.log.scans
+				  << std::setw(10) << fixedOrDash(ours, 3) << std::setw(10) << fixedOrDash(icp, 3) << std::setw(9)
+				  << fixedOrDash(icp / ours, 2) << std::setw(10) << fixedOrDash(r.ate_odometry_m, 3) << std::setw(10)
+				  << fixedOrDash(r.ate_ours_m, 3) << std::setw(10) << fixedOrDash(r.ate_icp_m, 3)
+				  << (r.icp_note.empty() ? "" : "  icp-slam: " + r.icp_note) << "\n";
+	}
+}
+
+void printKeyValues(const std::vector<TBenchRow>& rows)
+{
+	double oursMs = 0, icpMs = 0, intervals = 0;
+	std::cout << "\n";
+	for (const auto& r : rows)
+	{
+		const double ours = r.ours.msPerScan(r.log.scans), icp = r.icp.msPerScan(r.log.scans);
+		const std::string k = "pipeline_" + r.log.name + "_";
+		std::cout << k << "pipeline_ms_per_scan=" << ours << "\n"
+				  << k << "icp_slam_ms_per_scan=" << icp << "\n"
+				  << k << "pipeline_speedup_vs_icp_slam=" << icp / ours << "\n";
+		if (r.ate_ours_m) std::cout << k << "pipeline_ate_m=" << *r.ate_ours_m << "\n";
+		if (r.ate_icp_m) std::cout << k << "icp_slam_ate_m=" << *r.ate_icp_m << "\n";
+		if (r.ate_odometry_m) std::cout << k << "odometry_ate_m=" << *r.ate_odometry_m << "\n";
+		const double n = static_cast<double>(r.log.scans - 1);
+		oursMs += ours * n, icpMs += icp * n, intervals += n;
+	}
+	std::cout << "pipeline_ms_per_scan=" << oursMs / intervals << "\nicp_slam_ms_per_scan=" << icpMs / intervals
+			  << "\npipeline_speedup_vs_icp_slam=" << icpMs / oursMs << "\n";
+}
+
+/** -r defaults: MRPT's sample rawlog and every rawlog_samples/<name>/sim.rawlog. */
+std::vector<std::string> defaultRawlogs()
+{
+	std::vector<std::string> out{kMrptSampleRawlog}, samples;
+	if (fs::is_directory("rawlog_samples"))
+		for (const auto& d : fs::directory_iterator("rawlog_samples"))
+			if (fs::exists(d.path() / "sim.rawlog")) samples.push_back((d.path() / "sim.rawlog").string());
+	std::sort(samples.begin(), samples.end());
+	out.insert(out.end(), samples.begin(), samples.end());
+	return out;
+}
+
+std::vector<TBenchRawlog> describeRawlogs(const std::vector<std::string>& paths, const std::vector<std::string>& truths)
+{
+	std::vector<TBenchRawlog> out;
+	for (size_t k = 0; k < paths.size(); ++k)
+	{
+		TBenchRawlog log;
+		log.path = paths[k];
+		if (!fs::exists(log.path)) throw std::runtime_error(log.path + ": rawlog not found");
+		log.name = rawlogName(log.path);
+		log.ground_truth = k < truths.size() ? truths[k] : findGroundTruth(log.path);
+		if (log.ground_truth == "-") log.ground_truth.clear();
+		if (!log.ground_truth.empty() && !fs::exists(log.ground_truth))
+			throw std::runtime_error(log.ground_truth + ": ground truth not found (for " + log.path + ")");
+		out.push_back(log);
+	}
+	return out;
+}
+}  // namespace
+
+int runPipelineSuite(int argc, char** argv)
+{
+	TCLAP::CmdLine cmd("hslam-bench pipeline: default pipeline (hslam-process) vs MRPT icp-slam, CPU ms per scan and ATE",
+					   ' ', "0.1");
+	TCLAP::UnlabeledValueArg<std::string> suite("suite", "pipeline", true, "", "suite", cmd);
+	TCLAP::MultiArg<std::string> rawlogs("r", "rawlog", "rawlog(s) (default: MRPT's sample and rawlog_samples/*/sim.rawlog)",
+										 false, "file", cmd);
+	TCLAP::MultiArg<std::string> truths("g", "ground-truth", "TUM ground truth of the i-th rawlog ('-' = none; default: "
+										"ground_truth.tum or <stem>.tum beside the rawlog)", false, "file.tum", cmd);
+	TCLAP::ValueArg<int> repetitions("n", "repetitions", "timed runs per program, best kept (default 3)", false, 3, "N", cmd);
+	TCLAP::ValueArg<std::string> config("c", "config", "hslam-process INI (default config_ini/hslam-default.ini)", false,
+										"config_ini/hslam-default.ini", "file.ini", cmd);
+	TCLAP::ValueArg<std::string> out("", "out", "folder for the runs (default ./hslam-bench-pipeline)", false,
+									 "hslam-bench-pipeline", "dir", cmd);
+	if (!cmd.parse(argc, argv)) return 0;
+	TBenchSetup setup;
+	setup.hslam_process = (fs::canonical("/proc/self/exe").parent_path() / "hslam-process").string();
+	setup.config = fs::absolute(config.getValue()).string();
+	setup.out_dir = fs::absolute(out.getValue()).string();
+	setup.repetitions = std::max(1, repetitions.getValue());
+	for (const auto& f : {setup.hslam_process, setup.config})
+		if (!fs::exists(f)) throw std::runtime_error(f + " not found");
+	if (std::system("command -v icp-slam >/dev/null 2>&1") != 0)
+		throw std::runtime_error("icp-slam not in PATH (Debian package mrpt-apps)");
+	const auto logs = describeRawlogs(rawlogs.getValue().empty() ? defaultRawlogs() : rawlogs.getValue(), truths.getValue());
+	std::cout << "Suite pipeline: " << logs.size() << " rawlog(s), " << setup.repetitions
+			  << " paired run(s) each; runs in " << setup.out_dir << "\n";
+	std::vector<TBenchRow> rows;
+	int failed = 0;
+	for (const auto& log : logs)
+	{
+		try
+		{
+			rows.push_back(benchOneRawlog(setup, log));
+		}
+		catch (const std::exception& e)  // keep the other rawlogs' figures
+		{
+			std::cerr << "\nhslam-bench pipeline: " << log.path << ": " << e.what() << "\n";
+			++failed;
+		}
+	}
+	if (!rows.empty())
+	{
+		printTable(rows);
+		printKeyValues(rows);
+	}
+	return failed == 0 ? 0 : 1;
+}
+
+}  // namespace hslam::bench
