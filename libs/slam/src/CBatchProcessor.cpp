@@ -33,6 +33,7 @@ TBatchResult CBatchProcessor::run()
 {
 	auto cfg = common::loadConfigWithOverrides(m_request.config_file, m_request.overrides);
 	common::resolvePathNextToIni(cfg, "dynamic_objects", "classifier_model", m_request.config_file);
+	common::resolvePathNextToIni(cfg, "vision", "rotation_model_file", m_request.config_file);
 	common::checkKnownSections(cfg, knownSections());
 	CMappingPipeline pipeline(cfg);
 	TOutputOptions outputOptions;

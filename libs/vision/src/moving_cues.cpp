@@ -8,11 +8,14 @@ namespace hslam::vision
 std::vector<size_t> inconsistentVectors(const std::vector<TFlowVector>& residual, const TFoeEstimate& foe,
 										const TFoeOptions& o)
 {
+	// Without a trustworthy FOE (robot turning or at rest) only clearly moving vectors count.
+	const bool useFoe = foe.valid && foe.confidence >= kMinFoeConfidence;
+	const double minLength_px = useFoe ? o.minFlow_px() : kNoFoeLengthFactor * o.minFlow_px();
 	std::vector<size_t> out;
 	for (size_t i = 0; i < residual.size(); ++i)
 	{
-		if (cv::norm(residual[i].flow()) < o.minFlow_px()) continue;
-		if (!foe.valid || i >= foe.inlier.size() || !foe.inlier[i]) out.push_back(i);
+		if (cv::norm(residual[i].flow()) < minLength_px) continue;
+		if (!useFoe || i >= foe.inlier.size() || !foe.inlier[i]) out.push_back(i);
 	}
 	return out;
 }

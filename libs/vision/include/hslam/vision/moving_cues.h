@@ -4,8 +4,10 @@
  *
  * A residual vector longer than the noise threshold that is not an inlier of
  * the FOE (its line misses the FOE, or it points the wrong way along it) is
- * inconsistent with a static world seen from the moving camera; with no FOE
- * (robot at rest, or too few vectors) every such vector is. Inconsistent
+ * inconsistent with a static world seen from the moving camera. With no FOE
+ * or one of confidence below kMinFoeConfidence (robot at rest or turning on
+ * the spot, too few vectors) only vectors kNoFoeLengthFactor times longer
+ * than the noise threshold are. Inconsistent
  * vectors are grouped with cv::partition (within cluster_distance_px of each
  * other) into image regions; a region with at least min_vectors vectors is
  * a cue, with the bearing of its centre in the robot frame so it can be
@@ -41,6 +43,11 @@ struct TMovingRegion
 	double bearing_rad = 0;  //!< of the centre, robot frame (CCW from x)
 	double bearing_min_rad = 0, bearing_max_rad = 0;  //!< of the box's left and right edges (min <= max)
 };
+
+/** An FOE with less confidence does not decide consistency. */
+constexpr double kMinFoeConfidence = 0.1;
+/** Without an FOE a vector must be this many times the noise threshold long. */
+constexpr double kNoFoeLengthFactor = 3.0;
 
 /** Indices of the residual vectors inconsistent with `foe`. */
 std::vector<size_t> inconsistentVectors(const std::vector<TFlowVector>& residual, const TFoeEstimate& foe,
