@@ -17,7 +17,7 @@ trap 'rm -rf "$tmp"' EXIT
 	--set world.map_image= --set simulation.duration_s=0.01
 cp "$tmp/floor/gt_map.png" config_ini/sim-worlds/floor.png
 
-for name in lab corridor umbmark floor laser-only odometry-gap people-crossing; do
+for name in lab corridor umbmark floor laser-only odometry-gap people-crossing camera; do
 	out=rawlog_samples/$name
 	rm -rf "$out"
 	"$SIM" -q -c "config_ini/sim-$name.ini" -o "$out"

@@ -2,6 +2,8 @@
 #include "CSimulationWriter.h"
 
 #include <hslam/io/carmen_observations.h>
+#include <mrpt/poses/CPose3D.h>
+#include <mrpt/poses/CPose3DQuat.h>
 
 #include <iomanip>
 #include <stdexcept>
@@ -98,13 +100,28 @@ void CSimulationWriter::onWaypointReached(size_t index, const hslam::sim::TSimul
 				<< "," << a.phi * 180.0 / M_PI << "," << o.x << "," << o.y << "," << o.phi * 180.0 / M_PI << "\n";
 }
 
+void CSimulationWriter::onCamera(const mrpt::obs::CObservation& obs, const hslam::sim::TSimulationFrame& frame)
+{
+	m_rawlog.write(obs);
+	if (!m_cameraTruth.is_open())
+		m_cameraTruth = openCsv(m_dir + "/camera_truth.tum", "# t x y z qx qy qz qw (camera frame: z forward, x right, y down)");
+	mrpt::poses::CPose3D sensor;
+	obs.getSensorPose(sensor);
+	const auto& p = frame.true_pose;
+	const mrpt::poses::CPose3D cam = mrpt::poses::CPose3D(p.x, p.y, 0, p.phi, 0, 0) + sensor;
+	const mrpt::poses::CPose3DQuat q(cam);
+	m_cameraTruth << std::setprecision(6) << frame.t_s << " " << q.x() << " " << q.y() << " " << q.z() << " "
+				  << q.quat().x() << " " << q.quat().y() << " " << q.quat().z() << " " << q.quat().r() << "\n";
+}
+
 void CSimulationWriter::finish()
 {
 	m_rawlog.close();
 	hslam::common::writeTumFile(m_dir + "/ground_truth.tum", m_truth);
 	hslam::common::writeTumFile(m_dir + "/odometry.tum", m_odometry);
-	for (auto* f : {&m_people, &m_labels, &m_sonar, &m_waypoints})
+	for (auto* f : {&m_people, &m_labels, &m_sonar, &m_waypoints, &m_cameraTruth})
 	{
+		if (!f->is_open()) continue;  // camera_truth.tum exists only with a camera
 		f->flush();
 		if (!*f) throw std::runtime_error(m_dir + ": write error in a CSV file");
 	}

@@ -26,6 +26,9 @@ class CSimulationWriter : public hslam::sim::ISimulationSink
 
 	/** Writes an ODOMETRY_GAP comment, as hslam-carmen2rawlog does for missing odometry. */
 	void onOdometryGap(const hslam::sim::TSimulationFrame& frame) override;
+	/** Writes the image and the true camera pose (camera_truth.tum). */
+	void onCamera(const mrpt::obs::CObservation& obs, const hslam::sim::TSimulationFrame& frame) override;
+
 	void onWaypointReached(size_t index, const hslam::sim::TSimulationFrame& frame) override;
 
 	/** Closes the rawlog and writes the TUM files. */
@@ -43,6 +46,7 @@ class CSimulationWriter : public hslam::sim::ISimulationSink
 	std::string m_dir;
 	hslam::io::CRawlogObservationWriter m_rawlog;
 	std::ofstream m_people, m_labels, m_sonar, m_waypoints;
+	std::ofstream m_cameraTruth;  //!< opened at the first image
 	hslam::common::TTrajectory2D m_truth, m_odometry;
 	hslam::sim::TOverviewTracks m_tracks;
 	size_t m_scans = 0, m_personBeams = 0, m_sonarEchoes = 0, m_sonarReadings = 0, m_sonarMultipath = 0;

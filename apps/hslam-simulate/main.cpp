@@ -14,6 +14,7 @@
 #include <hslam/sim/scene_rendering.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/img/CImage.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/serialization/CArchive.h>
 
@@ -63,6 +64,11 @@ int simulate(const std::string& iniFile, const std::vector<std::string>& overrid
 		throw std::runtime_error(outDir + "/gt_map.png: cannot write");
 	writeGridMap(outDir + "/gt_map.gridmap.gz", gtGrid);
 
+	if (config.camera.enabled && config.camera.jpeg_quality > 0)
+	{  // MRPT's (process-wide) serialization setting: RGB images stored as JPEG
+		mrpt::img::CImage::DISABLE_JPEG_COMPRESSION(false);
+		mrpt::img::CImage::SERIALIZATION_JPEG_QUALITY(config.camera.jpeg_quality);
+	}
 	CSimulationWriter writer(outDir, scene.people.size());
 	hslam::sim::CSimulator sim(config, std::move(scene));
 	int lastReport = -1;

@@ -10,7 +10,7 @@ namespace hslam::sim
 {
 TSimulatorConfig loadSimulatorConfig(const mrpt::config::CConfigFileBase& cfg)
 {
-	hslam::common::checkKnownSections(cfg, {"simulation", "world", "robot", "path", "odometry", "laser", "sonar"});
+	hslam::common::checkKnownSections(cfg, {"simulation", "world", "robot", "path", "odometry", "laser", "sonar", "camera"});
 	TSimulatorConfig c;
 	hslam::common::loadOptions(c.simulation, cfg, "simulation");
 	hslam::common::loadOptions(c.world, cfg, "world");
@@ -19,6 +19,7 @@ TSimulatorConfig loadSimulatorConfig(const mrpt::config::CConfigFileBase& cfg)
 	hslam::common::loadOptions(c.odometry, cfg, "odometry");
 	hslam::common::loadOptions(c.laser, cfg, "laser");
 	hslam::common::loadOptions(c.sonar, cfg, "sonar");
+	hslam::common::loadOptions(c.camera, cfg, "camera");
 	return c;
 }
 
@@ -31,6 +32,7 @@ void saveSimulatorConfig(const TSimulatorConfig& c, mrpt::config::CConfigFileBas
 	hslam::common::saveOptions(c.odometry, cfg, "odometry");
 	hslam::common::saveOptions(c.laser, cfg, "laser");
 	hslam::common::saveOptions(c.sonar, cfg, "sonar");
+	hslam::common::saveOptions(c.camera, cfg, "camera");
 }
 
 TScene loadScene(const TWorldOptions& w, const std::string& baseDir)
@@ -76,6 +78,7 @@ CSimulator::CSimulator(const TSimulatorConfig& config, TScene scene)
 	  m_rngCamera(seededStream(config.simulation.seed, 4))
 {
 	for (const auto& p : m_scene.people) m_people.emplace_back(p);
+	if (m_cfg.camera.enabled) m_camera = std::make_shared<CPinholeCameraSimulator>(m_cfg.camera);
 	const auto& path = m_cfg.path;
 	if (path.mode == "waypoints")
 	{

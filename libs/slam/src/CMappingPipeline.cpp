@@ -19,7 +19,7 @@ common::TTimedPose2D timedPose(const mrpt::obs::CObservation& obs, const mrpt::p
 std::vector<std::string> CMappingPipeline::sections()
 {
 	std::vector<std::string> s{"process", "grid", "laser_model", "pose_estimation", "dynamic_objects",
-							   "sonar_model", "tbf"};
+							   "sonar_model", "tbf", "vision"};
 	for (const auto& e : CScanMatchingPoseEstimator::sections()) s.push_back(e);
 	for (const auto& e : CLocalMapPoseEstimator::sections())
 		if (std::find(s.begin(), s.end(), e) == s.end()) s.push_back(e);
@@ -32,6 +32,7 @@ CMappingPipeline::CMappingPipeline(const mrpt::config::CConfigFileBase& cfg)
 	  m_grid(common::loadedOptions<maps::CTiledOccupancyGrid::TOptions>(cfg, "grid")),
 	  m_laserInserter(common::loadedOptions<maps::CLaserGridInserter::TOptions>(cfg, "laser_model")),
 	  m_sonar(common::loadedOptions<TSonarMappingOptions>(cfg, "sonar_model"), common::loadedOptions<TTbfStageOptions>(cfg, "tbf")),
+	  m_vision(cfg),
 	  m_dynamicOptions(common::loadedOptions<dynamic::CDynamicObjectFilter::TOptions>(cfg, "dynamic_objects")),
 	  m_estimator(createPoseEstimator(m_poseOptions, cfg, m_timer))
 {
@@ -62,6 +63,7 @@ void CMappingPipeline::saveOptions(mrpt::config::CConfigFileBase& out) const
 	common::saveOptions(m_dynamicOptions, out, "dynamic_objects");
 	common::saveOptions(m_sonar.mappingOptions(), out, "sonar_model");
 	common::saveOptions(m_sonar.tbfOptions(), out, "tbf");
+	common::saveOptions(m_vision.options(), out, "vision");
 }
 
 void CMappingPipeline::keepSensorMaps()
@@ -102,6 +104,11 @@ void CMappingPipeline::processObservation(const mrpt::obs::CObservation::Ptr& ob
 	}
 	else if (auto range = std::dynamic_pointer_cast<mrpt::obs::CObservationRange>(obs))
 		processSonar(*range);
+	else if (auto image = std::dynamic_pointer_cast<mrpt::obs::CObservationImage>(obs))
+	{
+		const TOdometryIncrement pending = m_odometry.pendingIncrement();
+		m_vision.process(*image, pending.known ? std::optional(m_deadReckoningPose + pending.delta) : std::nullopt, m_timer);
+	}
 	else if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(obs))
 	{
 		common::CStageTimer::CScope t(m_timer, "odometry");

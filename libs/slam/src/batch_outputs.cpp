@@ -1,6 +1,7 @@
 #include <hslam/maps/grid_rendering.h>
 #include <hslam/slam/batch_outputs.h>
 #include <hslam/slam/pose_plots.h>
+#include <hslam/slam/vision_outputs.h>
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/serialization/CArchive.h>
 
@@ -195,6 +196,7 @@ std::vector<std::string> writeMappingOutputs(const CMappingPipeline& pipeline, c
 	savePng(renderPosePlot(pipeline.estimates(), pipeline.odometryTrajectory()), dir + "/pose_plot.png");
 	written.push_back(dir + "/pose_plot.png");
 	writeDynamicObjects(pipeline, dir, written);
+	writeVisionOutputs(pipeline.visionStage(), dir, written);
 	return written;
 }
 

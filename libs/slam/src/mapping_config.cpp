@@ -35,7 +35,10 @@ std::vector<std::string> TMappingConfig::knownSections()
 	return sections;
 }
 
-std::vector<common::TPathKey> TMappingConfig::pathKeys() { return {{"dynamic_objects", "classifier_model"}}; }
+std::vector<common::TPathKey> TMappingConfig::pathKeys()
+{
+	return {{"dynamic_objects", "classifier_model"}, {"vision", "rotation_model_file"}};
+}
 
 TMappingConfig TMappingConfig::fromConfig(const std::string& iniFile, const std::vector<std::string>& overrides)
 {

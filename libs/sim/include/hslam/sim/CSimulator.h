@@ -16,6 +16,7 @@
 #include <hslam/sim/CLaserSimulator.h>
 #include <hslam/sim/COdometryFault.h>
 #include <hslam/sim/CPathFollower.h>
+#include <hslam/sim/CPinholeCameraSimulator.h>
 #include <hslam/sim/CSonarSimulator.h>
 #include <hslam/sim/ICameraModel.h>
 #include <hslam/sim/scene.h>
@@ -131,10 +132,11 @@ struct TSimulatorConfig
 	TOdometryOptions odometry;
 	TLaserOptions laser;
 	TSonarOptions sonar;
+	TCameraSimOptions camera;  //!< [camera] (off by default)
 };
 
 /** Loads every section ([simulation], [world], [robot], [path], [odometry],
- * [laser], [sonar]); unknown sections/keys and bad values throw config_error. */
+ * [laser], [sonar], [camera]); unknown sections/keys and bad values throw config_error. */
 TSimulatorConfig loadSimulatorConfig(const mrpt::config::CConfigFileBase& cfg);
 /** Writes every section (the effective configuration). */
 void saveSimulatorConfig(const TSimulatorConfig& config, mrpt::config::CConfigFileBase& cfg);

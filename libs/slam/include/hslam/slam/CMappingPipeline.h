@@ -30,6 +30,7 @@
 #include <hslam/slam/COdometryTracker.h>
 #include <hslam/slam/CPoseEstimator.h>
 #include <hslam/slam/CSonarMappingStage.h>
+#include <hslam/slam/CVisionStage.h>
 #include <mrpt/obs/CObservationRange.h>
 #include <mrpt/config/CConfigFileBase.h>
 
@@ -85,6 +86,7 @@ class CMappingPipeline
 	/** Grid of the sonar readings alone (weight 1); null unless kept. */
 	const maps::CTiledOccupancyGrid* sonarOnlyMap() const { return m_sonar.sonarOnlyMap(); }
 	const CSonarMappingStage& sonarStage() const { return m_sonar; }
+	const CVisionStage& visionStage() const { return m_vision; }
 	/** Estimated robot pose at each scan. */
 	const common::TTrajectory2D& trajectory() const { return m_trajectory; }
 	/** Dead-reckoning pose at each scan (same timestamps), for comparison. */
@@ -149,6 +151,7 @@ class CMappingPipeline
 	maps::CLaserGridInserter m_laserInserter;
 	std::unique_ptr<maps::CTiledOccupancyGrid> m_laserOnly;  //!< kept only with sonar mapping on
 	CSonarMappingStage m_sonar;
+	CVisionStage m_vision;  //!< camera branch ([vision], CObservationImage)
 	bool m_keepSensorMaps = false;
 	mrpt::poses::CPose2D m_lastEstimate;  //!< pose at the latest scan (origin before the first)
 	dynamic::CDynamicObjectFilter::TOptions m_dynamicOptions;
