@@ -18,7 +18,7 @@ common::TTimedPose2D timedPose(const mrpt::obs::CObservation& obs, const mrpt::p
 std::vector<std::string> CMappingPipeline::sections()
 {
 	std::vector<std::string> s{"process", "grid", "laser_model", "pose_estimation", "dynamic_objects",
-							   "sonar_model", "tbf"};
+							   "sonar_model", "tbf", "odometry_correction"};
 	for (const auto& e : CScanMatchingPoseEstimator::sections()) s.push_back(e);
 	return s;
 }
@@ -30,7 +30,8 @@ CMappingPipeline::CMappingPipeline(const mrpt::config::CConfigFileBase& cfg)
 	  m_laserInserter(common::loadedOptions<maps::CLaserGridInserter::TOptions>(cfg, "laser_model")),
 	  m_sonar(common::loadedOptions<TSonarMappingOptions>(cfg, "sonar_model"), common::loadedOptions<TTbfStageOptions>(cfg, "tbf")),
 	  m_dynamicOptions(common::loadedOptions<dynamic::CDynamicObjectFilter::TOptions>(cfg, "dynamic_objects")),
-	  m_estimator(createPoseEstimator(m_poseOptions, cfg, m_timer))
+	  m_estimator(createPoseEstimator(m_poseOptions, cfg, m_timer)),
+	  m_odometry(common::loadedOptions<calib::TOdometryCorrection>(cfg, "odometry_correction"))
 {
 	if (m_dynamicOptions.enabled)
 	{
