@@ -22,8 +22,9 @@ const char* navStateName(ENavState s)
 
 std::vector<std::string> TSubsumptionOptions::sections()
 {
-	return {"nav_controller",	"nav_fusion",		  "nav_target_seeking", "nav_velocity_control",
-			"nav_sector_selecting", "nav_side_avoidance", "nav_forward_turning", "nav_corner_trap"};
+	return {"nav_controller",		"nav_fusion",		  "nav_target_seeking",	 "nav_velocity_control",
+			"nav_sector_selecting", "nav_side_avoidance", "nav_forward_turning", "nav_corner_trap",
+			"nav_boundary_following"};
 }
 
 TSubsumptionOptions TSubsumptionOptions::load(const mrpt::config::CConfigFileBase& cfg)
@@ -38,6 +39,7 @@ TSubsumptionOptions TSubsumptionOptions::load(const mrpt::config::CConfigFileBas
 	common::loadOptions(o.side_avoidance, cfg, s[5]);
 	common::loadOptions(o.forward_turning, cfg, s[6]);
 	common::loadOptions(o.corner_trap, cfg, s[7]);
+	common::loadOptions(o.boundary_following, cfg, s[8]);
 	return o;
 }
 
@@ -52,6 +54,7 @@ void TSubsumptionOptions::save(mrpt::config::CConfigFileBase& cfg) const
 	common::saveOptions(side_avoidance, cfg, s[5]);
 	common::saveOptions(forward_turning, cfg, s[6]);
 	common::saveOptions(corner_trap, cfg, s[7]);
+	common::saveOptions(boundary_following, cfg, s[8]);
 }
 
 CSubsumptionController::CSubsumptionController(const TSubsumptionOptions& o)
@@ -61,13 +64,15 @@ CSubsumptionController::CSubsumptionController(const TSubsumptionOptions& o)
 	  m_velocityControl(o.velocity_control),
 	  m_sectors(o.sector_selecting),
 	  m_side(o.side_avoidance),
-	  m_forwardTurning(o.forward_turning, o.corner_trap)
+	  m_forwardTurning(o.forward_turning, o.corner_trap),
+	  m_boundary(o.boundary_following)
 {
 }
 
 void CSubsumptionController::setTargets(std::vector<mrpt::math::TPoint2D> targets)
 {
 	m_targets = CTargetSequence(std::move(targets));
+	m_boundary.reset();
 }
 
 double CSubsumptionController::rotationCommand(const CPolarProfile& profile, const std::array<TVirtualSonar, 8>& ring,
@@ -84,6 +89,27 @@ double CSubsumptionController::rotationCommand(const CPolarProfile& profile, con
 												: ws * target.bearing_rad + (1.0 - ws) * sectors.chosen_rad;
 	const double wa = sideAvoidanceWeight(nearest_mm);  // eq. 36
 	return m_opts.controller.heading_gain_per_s * heading + wa * side.w_rad_s;
+}
+
+void CSubsumptionController::blendLayers(const CPolarProfile& profile, const TTargetSeekingOutput& seek, double t_s,
+										 TNavCommand& cmd)
+{
+	const auto ring = virtualSonars(profile, m_opts.controller.virtual_sonar_cone_rad);
+	double v = std::min({seek.v_mps, m_velocityControl.evaluate(ring), 1e-3 * m_opts.controller.max_speed_mm_s});
+	const bool targetClear = m_sectors.evaluate(profile, seek.bearing_rad, seek.distance_m).target_clear;
+	const auto boundary = m_boundary.update(profile, seek.distance_m, targetClear, t_s);
+	const double maxW = m_opts.controller.max_turn_rate_rad_s;
+	if (boundary.active)
+	{
+		cmd.v_mps = std::min(v, boundary.v_mps);
+		cmd.w_rad_s = std::clamp(boundary.w_rad_s, -maxW, maxW);
+		return;
+	}
+	cmd.w_rad_s = std::clamp(rotationCommand(profile, ring, seek, v, cmd.nearest_m * 1e3), -maxW, maxW);
+	// Figure 59: forward turning subsumes v with 0 when the turn is too sharp.
+	if (!m_forwardTurning.allowsForwardMotion(cmd.w_rad_s / std::max(1e-6, m_opts.controller.heading_gain_per_s)))
+		v = 0;
+	cmd.v_mps = std::max(0.0, v);
 }
 
 TNavCommand CSubsumptionController::step(const mrpt::math::TPose2D& pose,
@@ -104,6 +130,7 @@ TNavCommand CSubsumptionController::step(const mrpt::math::TPose2D& pose,
 	while (seek.reached)  // stop at the target, then go on to the next one
 	{
 		m_targets.advance();
+		m_boundary.reset();
 		cmd.targets_reached = m_targets.reachedCount();
 		if (!(target = m_targets.current()))
 		{
@@ -120,15 +147,7 @@ TNavCommand CSubsumptionController::step(const mrpt::math::TPose2D& pose,
 		cmd.w_rad_s = escape.w_rad_s;
 		return cmd;
 	}
-	const auto ring = virtualSonars(profile, m_opts.controller.virtual_sonar_cone_rad);
-	double v = std::min({seek.v_mps, m_velocityControl.evaluate(ring), 1e-3 * m_opts.controller.max_speed_mm_s});
-	const double w = rotationCommand(profile, ring, seek, v, cmd.nearest_m * 1e3);
-	const double maxW = m_opts.controller.max_turn_rate_rad_s;
-	cmd.w_rad_s = std::clamp(w, -maxW, maxW);
-	// Figure 59: forward turning subsumes v with 0 when the turn is too sharp.
-	if (!m_forwardTurning.allowsForwardMotion(cmd.w_rad_s / std::max(1e-6, m_opts.controller.heading_gain_per_s)))
-		v = 0;
-	cmd.v_mps = std::max(0.0, v);
+	blendLayers(profile, seek, t_s, cmd);
 	cmd.state = ENavState::navigating;
 	return cmd;
 }

@@ -18,13 +18,15 @@ double segmentDistance(const TSegment& s, const mrpt::math::TPoint2D& p)
 }
 }  // namespace
 
-double clearance_m(const CWorld& world, const mrpt::math::TPoint2D& p)
+double clearance_m(const CWorld& world, const mrpt::math::TPoint2D& p, bool includePeople)
 {
 	double best = std::numeric_limits<double>::infinity();
 	for (const auto& s : world.segments()) best = std::min(best, segmentDistance(s, p));
-	for (const auto* circles : {&world.circles(), &world.dynamicCircles()})
-		for (const auto& c : *circles)
-			best = std::min(best, std::hypot(p.x - c.centre.x, p.y - c.centre.y) - c.radius_m);
+	auto nearestCircle = [&](const std::vector<TCircle>& circles) {
+		for (const auto& c : circles) best = std::min(best, std::hypot(p.x - c.centre.x, p.y - c.centre.y) - c.radius_m);
+	};
+	nearestCircle(world.circles());
+	if (includePeople) nearestCircle(world.dynamicCircles());
 	const auto& r = world.raster();
 	if (!r.empty())
 		for (int j = 0; j < r.height; ++j)

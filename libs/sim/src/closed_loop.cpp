@@ -74,7 +74,13 @@ TClosedLoopResult runClosedLoop(CSimulator& sim, IClosedLoopController& controll
 			res.path.push_back({t, truth, sim.robot().odometryVelocity().vx, clearance});
 			nextSample_s += o.path_sample_period_s;
 		}
-		if (clearance < o.collision_radius_m) res.collided = true;
+		if (clearance < o.collision_radius_m)
+		{
+			if (clearance_m(sim.scene().world, {truth.x, truth.y}, false) < o.collision_radius_m)
+				res.collided = true;
+			else if (tick % controlTicks == 0)
+				++res.person_contacts;
+		}
 		if (t > o.timeout_s) res.timed_out = true;
 		if (res.collided || res.timed_out || sim.done()) break;
 		if (tick % controlTicks == 0)

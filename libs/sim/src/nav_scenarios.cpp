@@ -1,11 +1,12 @@
 /* hslam sim: navigation scenarios (see nav_scenarios.h). */
-#include <hslam/sim/clearance.h>
+#include <hslam/sim/free_space.h>
 #include <hslam/sim/nav_scenarios.h>
 #include <hslam/sim/scene.h>
 
 #include <cmath>
 #include <filesystem>
 #include <random>
+#include <stdexcept>
 
 namespace hslam::sim
 {
@@ -32,25 +33,22 @@ std::vector<TNavScenario> thesisTrials(const std::string& dir)
 
 namespace
 {
-/** Random free points of a world (static geometry only), fixed seed. */
+/** Random pairs of free points of a world (static geometry), fixed seed;
+ * `freeSeed` is a point known to lie in the world's free space. */
 std::vector<TNavScenario> drawPairs(const std::string& name, const std::string& scene, const TScenarioDrawOptions& o,
-									unsigned seed, bool (*accept)(const mrpt::math::TPoint2D&, const mrpt::math::TPoint2D&))
+									unsigned seed, const mrpt::math::TPoint2D& freeSeed,
+									bool (*accept)(const mrpt::math::TPoint2D&, const mrpt::math::TPoint2D&))
 {
 	const TScene sc = loadSceneFile(scene);
-	const auto b = sc.world.bounds();
+	const auto cells = CFreeSpaceGrid(sc.world, freeSeed, o.min_clearance_m).freeCells();
+	if (cells.empty()) throw std::runtime_error(scene + ": no free space around the seed point");
 	std::mt19937_64 rng(seed);
-	std::uniform_real_distribution<double> ux(b.min_x, b.max_x), uy(b.min_y, b.max_y), uphi(-M_PI, M_PI);
-	auto freePoint = [&]() {
-		for (;;)
-		{
-			const mrpt::math::TPoint2D p(ux(rng), uy(rng));
-			if (clearance_m(sc.world, p) >= o.min_clearance_m) return p;
-		}
-	};
+	std::uniform_int_distribution<size_t> pick(0, cells.size() - 1);
+	std::uniform_real_distribution<double> uphi(-M_PI, M_PI);
 	std::vector<TNavScenario> out;
 	for (int tries = 0; static_cast<int>(out.size()) < o.pairs_per_world && tries < 100000; ++tries)
 	{
-		const auto a = freePoint(), t = freePoint();
+		const auto a = cells[pick(rng)], t = cells[pick(rng)];
 		const double d = std::hypot(t.x - a.x, t.y - a.y);
 		if (d < o.min_distance_m || d > o.max_distance_m || (accept && !accept(a, t))) continue;
 		out.push_back({name, scene, mrpt::math::TPose2D(a.x, a.y, uphi(rng)), {t}});
@@ -75,10 +73,10 @@ std::vector<TNavScenario> benchmarkScenarios(const std::string& dir, const TScen
 	auto path = [&](const char* f) { return (std::filesystem::path(dir) / f).string(); };
 	std::vector<TNavScenario> all;
 	auto add = [&](std::vector<TNavScenario> v) { all.insert(all.end(), v.begin(), v.end()); };
-	add(drawPairs("lab", path("nav-lab.scene"), o, o.seed + 1, nullptr));
-	add(drawPairs("floor", path("floor.scene"), o, o.seed + 2, nullptr));
-	add(drawPairs("cluttered", path("nav-cluttered.scene"), o, o.seed + 3, nullptr));
-	add(drawPairs("doorway", path("nav-doorway.scene"), o, o.seed + 4, acrossTheDoor));
+	add(drawPairs("lab", path("nav-lab.scene"), o, o.seed + 1, {1.0, 1.0}, nullptr));
+	add(drawPairs("floor", path("floor.scene"), o, o.seed + 2, {1.25, 1.25}, nullptr));
+	add(drawPairs("cluttered", path("nav-cluttered.scene"), o, o.seed + 3, {0.7, 0.7}, nullptr));
+	add(drawPairs("doorway", path("nav-doorway.scene"), o, o.seed + 4, {1.0, 1.0}, acrossTheDoor));
 	// U-trap: the hand-placed crossings (start west facing the U's mouth,
 	// target east behind its base), then random pairs.
 	const std::string u = path("nav-utrap.scene");
@@ -86,7 +84,7 @@ std::vector<TNavScenario> benchmarkScenarios(const std::string& dir, const TScen
 		all.push_back({"utrap", u, mrpt::math::TPose2D(1.5, y, 0.0), {{8.5, 8.0 - y}}});
 	TScenarioDrawOptions rest = o;
 	rest.pairs_per_world = std::max(0, o.pairs_per_world - 3);
-	add(drawPairs("utrap", u, rest, o.seed + 5, notInsideTheU));
+	add(drawPairs("utrap", u, rest, o.seed + 5, {1.0, 1.0}, notInsideTheU));
 	return all;
 }
 

@@ -13,9 +13,13 @@
  *    (1 - w_s) h_sector, and w = k_h h + w_a w_side (w_a: eq. 36), clipped. The
  *    side layer subsumes the heading below its threshold; the forward turning
  *    layer subsumes everything during an escape.
- * At the last target the controller stops (0, 0) and reports done. No I/O. */
+ * Out of a local minimum (no progress towards the target for a while) the
+ * boundary following layer takes over the heading (CBoundaryFollowingLayer;
+ * an addition to the thesis). At the last target the controller stops (0, 0)
+ * and reports done. No I/O. */
 #pragma once
 
+#include <hslam/nav/CBoundaryFollowingLayer.h>
 #include <hslam/nav/CForwardTurningLayer.h>
 #include <hslam/nav/CRangeFusion.h>
 #include <hslam/nav/CSectorSelectingLayer.h>
@@ -59,6 +63,7 @@ struct TSubsumptionOptions
 	TSideAvoidanceOptions side_avoidance;
 	TForwardTurningOptions forward_turning;
 	TCornerTrapOptions corner_trap;
+	TBoundaryFollowingOptions boundary_following;
 
 	/** Section names, in the order load() reads them. */
 	static std::vector<std::string> sections();
@@ -101,6 +106,8 @@ class CSubsumptionController
    private:
 	double rotationCommand(const CPolarProfile& profile, const std::array<TVirtualSonar, 8>& ring,
 						   const TTargetSeekingOutput& target, double v_mps, double nearest_mm) const;
+	/** (v, w) of the layers below the forward turning layer. */
+	void blendLayers(const CPolarProfile& profile, const TTargetSeekingOutput& seek, double t_s, TNavCommand& cmd);
 
 	TSubsumptionOptions m_opts;
 	CRangeFusion m_fusion;
@@ -109,6 +116,7 @@ class CSubsumptionController
 	CSectorSelectingLayer m_sectors;
 	CSideAvoidanceLayer m_side;
 	CForwardTurningLayer m_forwardTurning;
+	CBoundaryFollowingLayer m_boundary;
 	CTargetSequence m_targets;
 };
 

@@ -8,6 +8,7 @@
 
 namespace hslam::sim
 {
-/** Nearest obstacle surface from p (m); infinity in an empty world. */
-double clearance_m(const CWorld& world, const mrpt::math::TPoint2D& p);
+/** Nearest obstacle surface from p (m); infinity in an empty world.
+ * includePeople = false: static geometry only. */
+double clearance_m(const CWorld& world, const mrpt::math::TPoint2D& p, bool includePeople = true);
 }  // namespace hslam::sim

@@ -5,9 +5,12 @@
  * hands the controller the latest laser scan, sonar ring and pose every
  * control_period_s, applies its (v, w), and scores the run: path length, time,
  * minimum clearance to the obstacles (people included), collisions (clearance
- * below collision_radius_m, the P3-DX footprint seen as a disc), CPU time per
- * control step (thread CPU clock, only inside control()). A collision ends
- * the run (the simulator has no contact physics). No file I/O. */
+ * below collision_radius_m with a static obstacle, the P3-DX footprint seen
+ * as a disc), person contacts (the simulated people walk their paths blind,
+ * through a robot in their way, so touching them is counted apart, per
+ * control period), CPU time per control step
+ * (thread CPU clock, only inside control()). A collision ends the run (the
+ * simulator has no contact physics). No file I/O. */
 #pragma once
 
 #include <hslam/sim/CSimulator.h>
@@ -60,6 +63,7 @@ struct TClosedLoopResult
 	bool finished = false;  //!< controller reported finished
 	bool failed = false;
 	bool collided = false;
+	int person_contacts = 0;  //!< control periods in which a walking person touched the robot
 	bool timed_out = false;
 	double path_length_m = 0, time_s = 0;
 	double min_clearance_m = 1e9;

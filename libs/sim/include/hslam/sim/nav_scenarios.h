@@ -32,7 +32,7 @@ std::vector<TNavScenario> thesisTrials(const std::string& sceneDir);
 
 struct TScenarioDrawOptions
 {
-	int pairs_per_world = 10;
+	int pairs_per_world = 13;
 	double min_clearance_m = 0.6;
 	double min_distance_m = 3.0;
 	double max_distance_m = 12.0;  //!< keeps runs on the 56 m floor short
