@@ -2,6 +2,9 @@
  * eq. 33-36, figures 61-63) on hand-built range profiles. */
 #include <gtest/gtest.h>
 #include <hslam/nav/CSubsumptionController.h>
+#include <hslam/testing/test_paths.h>
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/config/CConfigFileMemory.h>
 
 #include <cmath>
 
@@ -133,4 +136,15 @@ TEST(SubsumptionController, StopsAtTheLastTarget)
 	EXPECT_EQ(cmd.v_mps, 0.0);
 	EXPECT_EQ(cmd.w_rad_s, 0.0);
 	EXPECT_EQ(cmd.targets_reached, 1u);
+}
+
+TEST(SubsumptionOptions, ShippedIniLoadsWithEveryKeyAtItsDefault)
+{
+	const mrpt::config::CConfigFile ini(std::string(HSLAM_SOURCE_DIR) + "/config_ini/nav-subsumption.ini");
+	const auto loaded = TSubsumptionOptions::load(ini);
+	mrpt::config::CConfigFileMemory a, b;
+	loaded.save(a);
+	TSubsumptionOptions().save(b);
+	EXPECT_EQ(a.getContent(), b.getContent());
+	for (const auto& section : TSubsumptionOptions::sections()) EXPECT_TRUE(ini.sectionExists(section)) << section;
 }
