@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake
   libmrpt-dev mrpt-apps mrpt-common   # MRPT 2.5: libraries, rawlog-edit/icp-slam, sample datasets
+  libmrpt-nav-dev                     # MRPT reactive navigation: the peer of hslam-bench nav
   libopencv-dev libeigen3-dev zlib1g-dev
   libgtest-dev libbenchmark-dev
   python3                             # scripts/compare_slam.py and its test (standard library only), batch summary

@@ -39,9 +39,22 @@ void CArcosOdometry::update(const arcos::TSip& sip)
 		if (dthUnits > 2048) dthUnits -= 4096;
 		if (dthUnits < -2048) dthUnits += 4096;
 		const double dth = dthUnits * m_conv.angle_rad_per_unit;
-		m_pose.x(m_pose.x() + dx * m_conv.dist_mm_per_unit * mm2m);
-		m_pose.y(m_pose.y() + dy * m_conv.dist_mm_per_unit * mm2m);
-		m_pose.phi(mrpt::math::wrapToPi(m_pose.phi() + dth));
+		if (m_correction.active())
+		{
+			// The controller's increment in its own robot frame, corrected
+			// (UMBmark, thesis 4.1), composed onto our pose.
+			const double th0 = m_prevTh * m_conv.angle_rad_per_unit;
+			const double wx = dx * m_conv.dist_mm_per_unit * mm2m, wy = dy * m_conv.dist_mm_per_unit * mm2m;
+			const mrpt::poses::CPose2D local(std::cos(th0) * wx + std::sin(th0) * wy,
+											 -std::sin(th0) * wx + std::cos(th0) * wy, dth);
+			m_pose = m_pose + m_correction.correctIncrement(local);
+		}
+		else
+		{
+			m_pose.x(m_pose.x() + dx * m_conv.dist_mm_per_unit * mm2m);
+			m_pose.y(m_pose.y() + dy * m_conv.dist_mm_per_unit * mm2m);
+			m_pose.phi(mrpt::math::wrapToPi(m_pose.phi() + dth));
+		}
 	}
 	m_prevX = sip.xpos_raw;
 	m_prevY = sip.ypos_raw;

@@ -26,7 +26,7 @@ void integrateArc(mrpt::math::TPose2D& pose, double ds, double dth)
 }
 
 CDiffDriveRobot::CDiffDriveRobot(const TDiffDriveOptions& options, const mrpt::math::TPose2D& start)
-	: m_opts(options), m_true(start), m_odom(start)
+	: m_opts(options), m_true(start), m_odom(start), m_correction(options.odometry_correction)
 {
 	const double ed = m_opts.ed_wheel_diameter_ratio;
 	m_leftScale = 2.0 / (ed + 1.0);
@@ -56,8 +56,11 @@ void CDiffDriveRobot::step(double v_cmd, double w_cmd, double dt, std::mt19937_6
 	const double dR = (m_v + 0.5 * m_w * b) * dt;
 	m_leftTravel += dL;
 	m_rightTravel += dR;
-	integrateArc(m_odom, 0.5 * (dL + dR), (dR - dL) / b);
-	m_velocity = mrpt::math::TTwist2D{m_v, 0.0, m_w};
+	double odoDs = 0, odoDth = 0;  // what the (possibly calibrated) odometry makes of the counts
+	m_correction.correctWheelTravel(dL, dR, odoDs, odoDth);
+	integrateArc(m_odom, odoDs, odoDth);
+	m_velocity = m_correction.active() ? mrpt::math::TTwist2D{odoDs / dt, 0.0, odoDth / dt}
+									   : mrpt::math::TTwist2D{m_v, 0.0, m_w};
 
 	// True motion: actual wheel diameters and wheelbase, plus random slip.
 	double tL = dL * m_leftScale, tR = dR * m_rightScale;

@@ -10,7 +10,7 @@ namespace hslam::sim
 {
 TSimulatorConfig loadSimulatorConfig(const mrpt::config::CConfigFileBase& cfg)
 {
-	hslam::common::checkKnownSections(cfg, {"simulation", "world", "robot", "path", "odometry", "laser", "sonar", "camera"});
+	hslam::common::checkKnownSections(cfg, {"simulation", "world", "robot", "path", "odometry", "laser", "sonar", "camera", "odometry_correction"});
 	TSimulatorConfig c;
 	hslam::common::loadOptions(c.simulation, cfg, "simulation");
 	hslam::common::loadOptions(c.world, cfg, "world");
@@ -20,6 +20,8 @@ TSimulatorConfig loadSimulatorConfig(const mrpt::config::CConfigFileBase& cfg)
 	hslam::common::loadOptions(c.laser, cfg, "laser");
 	hslam::common::loadOptions(c.sonar, cfg, "sonar");
 	hslam::common::loadOptions(c.camera, cfg, "camera");
+	// Optional UMBmark calibration of the odometry (hslam-umbmark writes it).
+	hslam::common::loadOptions(c.robot.kinematics.odometry_correction, cfg, "odometry_correction");
 	return c;
 }
 
@@ -33,6 +35,7 @@ void saveSimulatorConfig(const TSimulatorConfig& c, mrpt::config::CConfigFileBas
 	hslam::common::saveOptions(c.laser, cfg, "laser");
 	hslam::common::saveOptions(c.sonar, cfg, "sonar");
 	hslam::common::saveOptions(c.camera, cfg, "camera");
+	hslam::common::saveOptions(c.robot.kinematics.odometry_correction, cfg, "odometry_correction");
 }
 
 TScene loadScene(const TWorldOptions& w, const std::string& baseDir)

@@ -19,7 +19,7 @@ common::TTimedPose2D timedPose(const mrpt::obs::CObservation& obs, const mrpt::p
 std::vector<std::string> CMappingPipeline::sections()
 {
 	std::vector<std::string> s{"process", "grid", "laser_model", "pose_estimation", "dynamic_objects",
-							   "sonar_model", "tbf", "vision"};
+							   "sonar_model", "tbf", "vision", "odometry_correction"};
 	for (const auto& e : CScanMatchingPoseEstimator::sections()) s.push_back(e);
 	for (const auto& e : CLocalMapPoseEstimator::sections())
 		if (std::find(s.begin(), s.end(), e) == s.end()) s.push_back(e);
@@ -34,7 +34,8 @@ CMappingPipeline::CMappingPipeline(const mrpt::config::CConfigFileBase& cfg)
 	  m_sonar(common::loadedOptions<TSonarMappingOptions>(cfg, "sonar_model"), common::loadedOptions<TTbfStageOptions>(cfg, "tbf")),
 	  m_vision(cfg),
 	  m_dynamicOptions(common::loadedOptions<dynamic::CDynamicObjectFilter::TOptions>(cfg, "dynamic_objects")),
-	  m_estimator(createPoseEstimator(m_poseOptions, cfg, m_timer))
+	  m_estimator(createPoseEstimator(m_poseOptions, cfg, m_timer)),
+	  m_odometry(common::loadedOptions<calib::TOdometryCorrection>(cfg, "odometry_correction"))
 {
 	if (m_dynamicOptions.enabled)
 	{

@@ -7,13 +7,13 @@ void COdometryTracker::addAction(const mrpt::obs::CActionRobotMovement2D& action
 	m_anyOdometry = true;
 	mrpt::poses::CPose2D change;
 	action.poseChange->getMean(change);
-	m_accumulated = m_accumulated + change;
+	m_accumulated = m_accumulated + m_correction.correctIncrement(change);
 }
 
 void COdometryTracker::addOdometryObservation(const mrpt::obs::CObservationOdometry& odometry)
 {
 	m_anyOdometry = true;
-	if (m_lastAbsolute) m_accumulated = m_accumulated + (odometry.odometry - *m_lastAbsolute);
+	if (m_lastAbsolute) m_accumulated = m_accumulated + m_correction.correctIncrement(odometry.odometry - *m_lastAbsolute);
 	m_lastAbsolute = odometry.odometry;
 }
 

@@ -11,6 +11,7 @@
  * odometry of the same robot; its correction factors belong in TConversion. */
 #pragma once
 
+#include <hslam/calib/COdometryCorrection.h>
 #include <hslam/hwdrivers/arcos_sip.h>
 #include <mrpt/math/TTwist2D.h>
 #include <mrpt/poses/CPose2D.h>
@@ -27,6 +28,8 @@ struct TArcosConversion
 	double vel_mms_per_unit = 1.0;  //!< VelConvFactor
 	double range_mm_per_unit = 1.0;  //!< RangeConvFactor
 	double diff_conv_per_mm = 0.0056;  //!< DiffConvFactor: w = (vr - vl)/2 * this [rad/s]
+	/** UMBmark calibration (thesis 4.1, hslam-umbmark) applied to each SIP's pose increment. */
+	calib::TOdometryCorrection odometry_correction;
 
 	template <class V>
 	void visit(V& v)
@@ -36,6 +39,7 @@ struct TArcosConversion
 		v.real("vel_conv_factor", vel_mms_per_unit, 0.01, 10.0);
 		v.real("range_conv_factor", range_mm_per_unit, 0.01, 10.0);
 		v.real("diff_conv_factor", diff_conv_per_mm, 1e-4, 0.1);
+		odometry_correction.visit(v);
 	}
 };
 
@@ -73,6 +77,7 @@ class CArcosOdometry
 
    private:
 	TArcosConversion m_conv;
+	calib::COdometryCorrection m_correction{m_conv.odometry_correction};
 	bool m_initialised = false;
 	int m_prevX = 0, m_prevY = 0, m_prevTh = 0;
 	mrpt::poses::CPose2D m_pose;

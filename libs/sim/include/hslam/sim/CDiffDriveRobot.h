@@ -22,6 +22,7 @@
  * The pose update integrates each step exactly along its arc. */
 #pragma once
 
+#include <hslam/calib/COdometryCorrection.h>
 #include <mrpt/math/TPose2D.h>
 #include <mrpt/math/TTwist2D.h>
 
@@ -41,6 +42,9 @@ struct TDiffDriveOptions
 	double max_turn_rate_rad_s = 300.0 * M_PI / 180.0;  //!< clamp of |w|
 	double max_accel_mps2 = 1.0;  //!< linear acceleration limit (0 = none)
 	double max_rot_accel_rad_s2 = 200.0 * M_PI / 180.0;  //!< rotational acceleration limit (0 = none)
+	/** UMBmark calibration the ODOMETRY applies to the encoder counts (thesis
+	 * 4.1, eq. 25-28); its own INI section [odometry_correction], not in visit(). */
+	calib::TOdometryCorrection odometry_correction;
 
 	template <class V>
 	void visit(V& v)
@@ -88,6 +92,7 @@ class CDiffDriveRobot
 	double m_v = 0, m_w = 0;  //!< current (rate-limited) command
 	double m_leftTravel = 0, m_rightTravel = 0;
 	double m_leftScale = 1, m_rightScale = 1;  //!< true/nominal wheel diameter
+	calib::COdometryCorrection m_correction;  //!< applied to the odometry only
 };
 
 /** Moves `pose` by (ds along the arc, dtheta) exactly. */

@@ -9,6 +9,7 @@
  * log that has no odometry at all (laser-only recordings). */
 #pragma once
 
+#include <hslam/calib/COdometryCorrection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationComment.h>
 #include <mrpt/obs/CObservationOdometry.h>
@@ -28,6 +29,10 @@ struct TOdometryIncrement
 class COdometryTracker
 {
    public:
+	COdometryTracker() = default;
+	/** With a UMBmark calibration (thesis 4.1) applied to every increment. */
+	explicit COdometryTracker(const calib::TOdometryCorrection& correction) : m_correction(correction) {}
+
 	/** Prefix of the CObservationComment text that marks missing odometry
 	 * (MRPT does not serialize a comment's sensorLabel, so the text carries it). */
 	static constexpr const char* kGapMarker = "ODOMETRY_GAP";
@@ -48,6 +53,7 @@ class COdometryTracker
 	TOdometryIncrement pendingIncrement() const;
 
    private:
+	calib::COdometryCorrection m_correction;  //!< identity unless [odometry_correction] enables it
 	mrpt::poses::CPose2D m_accumulated;
 	std::optional<mrpt::poses::CPose2D> m_lastAbsolute;
 	bool m_gap = false;

@@ -1,0 +1,150 @@
+/* hslam-navigate: drives a P3-DX to targets with the subsumption controller
+ * of thesis 4.2 (libs/nav), recording as it goes.
+ *
+ *   hslam-navigate --sim config_ini/sim-nav-lab.ini --targets "1.5 2.7; 1.5 5.2" -o OUT
+ *   hslam-navigate --thesis-trial 2 -o OUT          (figures 66-68, lab world)
+ *   hslam-navigate --pioneer grabber.ini --laser-section LASER --targets-file T.txt -o OUT
+ *
+ * Writes into OUT: navigation.rawlog (every observation), path.csv, path.png
+ * (path coloured by speed, obstacles, targets), live_map.png/.gridmap.gz (map
+ * built while driving), config_used.ini; with --sim also ground_truth.tum and
+ * gt_map.png. Exit 0 when every target was reached without collision, 3 when
+ * not (outputs still written), 1 on errors. */
+#include "CNavigationLog.h"
+#include "pioneer_mode.h"
+#include "sim_mode.h"
+
+#include <hslam/common/command_line.h>
+#include <hslam/common/parse_number.h>
+#include <hslam/sim/nav_scenarios.h>
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <atomic>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace
+{
+using namespace hslam;
+std::atomic<bool> g_stop{false};
+void onSignal(int) { g_stop = true; }
+
+std::vector<mrpt::math::TPoint2D> readTargetsFile(const std::string& path)
+{
+	std::ifstream in(path);
+	if (!in) throw std::runtime_error(path + ": cannot be opened");
+	std::string line, all;
+	for (int n = 1; std::getline(in, line); ++n)
+	{
+		const auto hash = line.find('#');
+		line = common::trim(line.substr(0, hash));
+		if (line.empty()) continue;
+		nav::parseTargetList(line, path + ":" + std::to_string(n));  // errors name the line
+		all += line + ";";
+	}
+	return nav::parseTargetList(all, path);
+}
+
+double positive(const std::string& text, const std::string& what)
+{
+	const auto v = common::tryParseDouble(text);
+	if (!v || *v <= 0) throw std::runtime_error(what + ": expected a positive number, got '" + text + "'");
+	return *v;
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+	try
+	{
+		TCLAP::CmdLine cmd("Drives the P3-DX (simulated or real) to targets with the subsumption controller of "
+						   "thesis 4.2, recording a rawlog, the live map, the path (CSV, PNG).",
+						   ' ', "hslam");
+		TCLAP::ValueArg<std::string> simArg("", "sim", "Simulator INI (world, robot, sensors)", false, "", "SIM.ini", cmd);
+		TCLAP::ValueArg<int> trialArg("", "thesis-trial", "Thesis 4.2.2 trial 1, 2 or 3 (figures 66-68) in the lab world",
+									  false, 0, "N", cmd);
+		TCLAP::ValueArg<std::string> pioneerArg("", "pioneer", "Grabber INI with the Pioneer (real robot or emulator)",
+												false, "", "GRABBER.ini", cmd);
+		TCLAP::ValueArg<std::string> pioneerSectionArg("", "pioneer-section", "Its Pioneer section", false, "PIONEER",
+													   "NAME", cmd);
+		TCLAP::ValueArg<std::string> laserSectionArg("", "laser-section", "Its laser section (empty: sonar only)", false,
+													 "", "NAME", cmd);
+		TCLAP::ValueArg<std::string> targetsArg("", "targets", "Targets 'x y; x y; ...' (m, world frame)", false, "",
+												"LIST", cmd);
+		TCLAP::ValueArg<std::string> targetsFileArg("", "targets-file", "Targets, one 'x y' per line", false, "", "FILE",
+													cmd);
+		TCLAP::ValueArg<std::string> navArg("c", "nav-config", "Controller INI (config_ini/nav-subsumption.ini)", false,
+											"", "NAV.ini", cmd);
+		TCLAP::ValueArg<std::string> outArg("o", "out", "Output folder (created; must not hold a previous run)", false,
+											"hslam-navigate-out", "DIR", cmd);
+		TCLAP::ValueArg<std::string> timeoutArg("", "timeout-s", "Give up after this time (s)", false, "300", "S", cmd);
+		if (!cmd.parse(argc, argv)) return common::exitCodeAfterParseStop(argc, argv);
+
+		nav::TSubsumptionOptions navOptions;
+		if (navArg.isSet()) navOptions = nav::TSubsumptionOptions::load(mrpt::config::CConfigFile(navArg.getValue()));
+		std::vector<mrpt::math::TPoint2D> targets;
+		std::string simIni = simArg.getValue();
+		if (trialArg.isSet())
+		{
+			const auto trials = sim::thesisTrials("config_ini/sim-worlds");
+			if (trialArg.getValue() < 1 || trialArg.getValue() > 3) throw std::runtime_error("--thesis-trial: 1, 2 or 3");
+			targets = trials[trialArg.getValue() - 1].targets;
+			if (simIni.empty()) simIni = "config_ini/sim-nav-lab.ini";
+		}
+		if (targetsArg.isSet()) targets = nav::parseTargetList(targetsArg.getValue(), "--targets");
+		if (targetsFileArg.isSet()) targets = readTargetsFile(targetsFileArg.getValue());
+		if (targets.empty()) throw std::runtime_error("no target: give --targets, --targets-file or --thesis-trial");
+		if (simIni.empty() == pioneerArg.getValue().empty())
+			throw std::runtime_error("choose one robot: --sim INI (or --thesis-trial) or --pioneer INI");
+		const double timeout_s = positive(timeoutArg.getValue(), "--timeout-s");
+
+		const std::string out = outArg.getValue();
+		if (std::filesystem::exists(std::filesystem::path(out) / "navigation.rawlog"))
+			throw std::runtime_error(out + ": holds a previous run (navigation.rawlog); choose another --out");
+		std::filesystem::create_directories(out);
+		mrpt::config::CConfigFileMemory used;
+		navOptions.save(used);
+		std::ofstream(std::filesystem::path(out) / "config_used.ini") << used.getContent();
+
+		std::signal(SIGINT, onSignal);
+		std::signal(SIGTERM, onSignal);
+		apps::CNavigationLog log(out);
+		bool ok = false;
+		size_t reached = 0;
+		if (!simIni.empty())
+		{
+			const auto r = apps::driveSimulated(simIni, navOptions, targets, timeout_s, log, out);
+			ok = r.loop.success();
+			reached = r.targets_reached;
+			std::cout << "simulated run: " << r.loop.time_s << " s, path " << r.loop.path_length_m
+					  << " m, min clearance " << r.loop.min_clearance_m << " m, "
+					  << (r.loop.collided ? "COLLISION" : "no collision") << ", CPU " << r.loop.cpuPerStep_us()
+					  << " us per control step\n";
+		}
+		else
+		{
+			apps::TPioneerDriveOptions p{pioneerArg.getValue(), pioneerSectionArg.getValue(), laserSectionArg.getValue(),
+										 0.1, timeout_s};
+			const auto r = apps::drivePioneer(p, navOptions, targets, log, g_stop);
+			ok = r.finished;
+			reached = r.targets_reached;
+			std::cout << "robot run: " << r.time_s << " s\n";
+		}
+		log.finish();
+		if (simIni.empty())
+			log.renderPath(log.liveMap(), targets).saveToFile((std::filesystem::path(out) / "path.png").string());
+		std::cout << "targets reached: " << reached << " / " << targets.size() << "\n"
+				  << "outputs in " << out << " (navigation.rawlog, path.csv, path.png, live_map.png)\n";
+		return ok ? 0 : 3;
+	}
+	catch (const std::exception& e)
+	{
+		std::cerr << "hslam-navigate: error: " << e.what() << "\n";
+		return 1;
+	}
+}

@@ -1,0 +1,132 @@
+/* hslam-umbmark: UMBmark odometry calibration (thesis 4.1, eq. 21-31).
+ *
+ *   hslam-umbmark FOLDER                  simulator output (waypoints.csv + ground_truth.tum)
+ *   hslam-umbmark -i RAWLOG [--truth TUM] a recording + the true poses
+ *   hslam-umbmark --endpoints CSV --side-m L   end points typed in (thesis tables 1-2)
+ *
+ * Prints the per-run errors, centres of gravity, alpha, beta, R, the corrected
+ * wheelbase, the encoder factors and E_max,syst, ending with "Ed=" and "Eb="
+ * lines; -o writes the [odometry_correction] INI section. Exit 0 on success,
+ * 1 on any error. */
+#include "umbmark_inputs.h"
+#include "umbmark_report.h"
+
+#include <hslam/common/command_line.h>
+#include <hslam/common/parse_number.h>
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+
+#include <filesystem>
+#include <iostream>
+#include <stdexcept>
+
+namespace
+{
+using namespace hslam;
+
+double positiveNumber(const std::string& text, const std::string& option)
+{
+	const auto v = common::tryParseDouble(text);
+	if (!v || *v <= 0) throw std::runtime_error(option + ": expected a positive number, got '" + text + "'");
+	return *v;
+}
+
+/** Runs of a folder or a rawlog; `source` and the side length are filled in. */
+std::vector<calib::TUmbmarkEndpoint> runsFromPoses(const std::vector<calib::TPosePair>& poses,
+												   calib::TUmbmarkOptions& options, bool sideGiven)
+{
+	const auto split = calib::splitUmbmarkRuns(poses);
+	if (split.endpoints.empty()) throw std::runtime_error("no closed square found in the odometry");
+	if (!sideGiven) options.side_length_m = split.mean_side_length_m;
+	return split.endpoints;
+}
+
+int evaluateEndpointTable(const std::string& path, calib::TUmbmarkOptions options, const std::string& iniOut)
+{
+	const auto table = apps::readEndpointCsv(path);
+	std::vector<calib::TUmbmarkEndpoint> all;
+	for (const auto& g : table.groups)
+	{
+		const auto& runs = table.runs.at(g);
+		all.insert(all.end(), runs.begin(), runs.end());
+		std::cout << "=== group " << g << " ===\n";
+		try
+		{
+			apps::printUmbmark(std::cout, runs, calib::computeUmbmark(runs, options), options);
+		}
+		catch (const std::invalid_argument& e)
+		{
+			std::cout << "  skipped: " << e.what() << "\n";
+		}
+	}
+	std::cout << "=== all groups pooled ===\n";
+	const auto result = calib::computeUmbmark(all, options);
+	apps::printUmbmark(std::cout, all, result, options);
+	if (!iniOut.empty()) apps::writeCorrectionIni(iniOut, result, options, path);
+	return 0;
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+	try
+	{
+		TCLAP::CmdLine cmd("UMBmark odometry calibration (thesis 4.1): CW/CCW centres of gravity, alpha, beta, R, "
+						   "Ed, Eb, encoder factors, E_max,syst; writes the [odometry_correction] INI section.",
+						   ' ', "hslam");
+		TCLAP::UnlabeledValueArg<std::string> folderArg(
+			"folder", "Simulator UMBmark folder with waypoints.csv and ground_truth.tum (e.g. rawlog_samples/umbmark)",
+			false, "", "FOLDER", cmd);
+		TCLAP::ValueArg<std::string> rawlogArg("i", "input", "Rawlog of a UMBmark run (odometry)", false, "", "RAWLOG",
+											   cmd);
+		TCLAP::ValueArg<std::string> truthArg("", "truth", "True poses for -i (default: ground_truth.tum beside it)",
+											  false, "", "TUM", cmd);
+		TCLAP::ValueArg<std::string> endpointsArg("", "endpoints", "End-point errors as CSV group,direction,x_cm,y_cm",
+												  false, "", "CSV", cmd);
+		TCLAP::ValueArg<std::string> sideArg("", "side-m", "Side of the square L (m); default: from the odometry",
+											 false, "", "L", cmd);
+		TCLAP::ValueArg<std::string> wheelbaseArg("", "wheelbase-m", "Nominal wheelbase b (m)", false, "0.335", "B",
+												  cmd);
+		TCLAP::SwitchArg firstOrderArg("", "first-order",
+									   "Use eq. 23-24 as printed (no exact-square refinement of alpha, beta)", cmd);
+		TCLAP::ValueArg<std::string> iniArg("o", "output-ini", "Write the [odometry_correction] section here (new file)",
+											false, "", "OUT.ini", cmd);
+		if (!cmd.parse(argc, argv)) return common::exitCodeAfterParseStop(argc, argv);
+
+		calib::TUmbmarkOptions options;
+		options.exact_model = !firstOrderArg.getValue();
+		options.nominal_wheelbase_m = positiveNumber(wheelbaseArg.getValue(), "--wheelbase-m");
+		if (sideArg.isSet()) options.side_length_m = positiveNumber(sideArg.getValue(), "--side-m");
+		const int inputs = folderArg.isSet() + rawlogArg.isSet() + endpointsArg.isSet();
+		if (inputs != 1) throw std::runtime_error("give exactly one input: FOLDER, -i RAWLOG or --endpoints CSV");
+		if (endpointsArg.isSet())
+		{
+			if (!sideArg.isSet()) throw std::runtime_error("--endpoints needs --side-m (thesis: 4.4)");
+			return evaluateEndpointTable(endpointsArg.getValue(), options, iniArg.getValue());
+		}
+		std::string source;
+		std::vector<calib::TPosePair> poses;
+		if (folderArg.isSet())
+		{
+			source = folderArg.getValue();
+			poses = apps::readWaypointFolder(source);
+		}
+		else
+		{
+			source = rawlogArg.getValue();
+			const std::string truth = truthArg.isSet()
+										  ? truthArg.getValue()
+										  : (std::filesystem::path(source).parent_path() / "ground_truth.tum").string();
+			poses = apps::readRawlogWithTruth(source, truth);
+		}
+		const auto runs = runsFromPoses(poses, options, sideArg.isSet());
+		const auto result = calib::computeUmbmark(runs, options);
+		apps::printUmbmark(std::cout, runs, result, options);
+		if (iniArg.isSet()) apps::writeCorrectionIni(iniArg.getValue(), result, options, source);
+		return 0;
+	}
+	catch (const std::exception& e)
+	{
+		std::cerr << "hslam-umbmark: error: " << e.what() << "\n";
+		return 1;
+	}
+}
