@@ -5,6 +5,7 @@
 #include "batch_test_utils.h"
 
 #include <gtest/gtest.h>
+#include <memory>
 #include <hslam/common/config_overrides.h>
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/eval/evaluate_trajectory.h>
@@ -39,13 +40,13 @@ class AcesLog : public ::testing::Test
 	static void TearDownTestSuite() { s_dir.reset(); }
 
 	/** Runs the pipeline with `method`; returns its trajectory. */
-	static slam::CMappingPipeline run(const std::string& method, std::vector<std::string> extra = {})
+	static std::unique_ptr<slam::CMappingPipeline> run(const std::string& method, std::vector<std::string> extra = {})
 	{
 		extra.push_back("pose_estimation.method=" + method);
 		const auto cfg = common::loadConfigWithOverrides(kDefaultIni, extra);
-		slam::CMappingPipeline pipeline(cfg);
+		auto pipeline = std::make_unique<slam::CMappingPipeline>(cfg);
 		io::CRawlogReader reader(s_dir->path().string() + "/aces.rawlog");
-		for (io::TRawlogEntry e; reader.next(e);) pipeline.processEntry(e);
+		for (io::TRawlogEntry e; reader.next(e);) pipeline->processEntry(e);
 		return pipeline;
 	}
 
@@ -62,14 +63,14 @@ std::unique_ptr<hslam::testing::CTempDir> AcesLog::s_dir;
 TEST_F(AcesLog, DefaultEstimatorBeatsOdometryAndIcpSlam)
 {
 	const auto pipeline = run("lines+icp");
-	const auto odometry = score(pipeline.odometryTrajectory());
-	const auto estimate = score(pipeline.trajectory());
+	const auto odometry = score(pipeline->odometryTrajectory());
+	const auto estimate = score(pipeline->trajectory());
 	EXPECT_NEAR(odometry.ate.position_m.rmse, 5.42, 0.05);  // the foundation's odometry baseline
 	EXPECT_LT(estimate.ate.position_m.rmse, 1.0);  // MRPT icp-slam: 1.00 m (measured 0.55 m)
 	EXPECT_LT(estimate.rpe[0].errors.trans_m.rmse, odometry.rpe[0].errors.trans_m.rmse);
 	EXPECT_LT(estimate.rpe[0].errors.rot_deg.rmse, odometry.rpe[0].errors.rot_deg.rmse);
 	// every scan reports a finite pose and a positive-definite covariance
-	for (const auto& e : pipeline.estimates())
+	for (const auto& e : pipeline->estimates())
 	{
 		ASSERT_TRUE(std::isfinite(e.estimate.pose.x()) && std::isfinite(e.estimate.pose.phi()));
 		ASSERT_GT(e.estimate.covariance.determinant(), 0.0);
@@ -79,7 +80,7 @@ TEST_F(AcesLog, DefaultEstimatorBeatsOdometryAndIcpSlam)
 TEST_F(AcesLog, IcpOnlyBeatsOdometry)
 {
 	const auto pipeline = run("icp");
-	EXPECT_LT(score(pipeline.trajectory()).ate.position_m.rmse, 1.0);  // measured 0.24 m
+	EXPECT_LT(score(pipeline->trajectory()).ate.position_m.rmse, 1.0);  // measured 0.24 m
 }
 
 TEST_F(AcesLog, LinesOnlyBeatsOdometry)
@@ -87,7 +88,7 @@ TEST_F(AcesLog, LinesOnlyBeatsOdometry)
 	// The thesis matcher alone (frame to frame, no map): weaker, but better than
 	// dead reckoning on this log (measured 3.1 m vs 5.4 m).
 	const auto pipeline = run("lines");
-	EXPECT_LT(score(pipeline.trajectory()).ate.position_m.rmse, 4.5);
+	EXPECT_LT(score(pipeline->trajectory()).ate.position_m.rmse, 4.5);
 }
 
 TEST_F(AcesLog, OdometryGapDoesNotMakeTheEstimateDiverge)
