@@ -2,7 +2,9 @@
  * truth: a drifted loop is closed; identical rooms are not confused. */
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <iostream>
+#include <map>
 
 #include "sim_trajectory.h"
 
@@ -71,4 +73,71 @@ TEST(LoopClosure, DriftedLoopIsClosedAndAteDrops)
 	EXPECT_GT(before, 1.0);  // the drift is real
 	EXPECT_GE(accepted, 5u);
 	EXPECT_LT(after, 0.15);
+}
+
+namespace
+{
+/** Room of 8 x 6 m at x0 (y 2.5..8.5) with a door in its bottom wall and
+ * the same furniture in every copy. */
+void addRoom(hslam::sim::CWorld& w, double x0)
+{
+	w.addSegment({{x0, 2.5}, {x0 + 5.6, 2.5}, {}});
+	w.addSegment({{x0 + 6.8, 2.5}, {x0 + 8, 2.5}, {}});
+	w.addSegment({{x0 + 8, 2.5}, {x0 + 8, 8.5}, {}});
+	w.addSegment({{x0 + 8, 8.5}, {x0, 8.5}, {}});
+	w.addSegment({{x0, 8.5}, {x0, 2.5}, {}});
+	addBox(w, x0 + 3.5, 5.5, x0 + 4.5, 6.1);
+	addBox(w, x0 + 7.3, 7.3, x0 + 8.0, 8.0);
+	addBox(w, x0, 3.5, x0 + 0.5, 4.2);
+	w.addCircle({{x0 + 1.0, 7.6}, 0.2, {}});
+	w.addCircle({{x0 + 4.0, 3.4}, 0.15, {}});
+}
+
+/** Two identical rooms (x 0..8 and 14..22) joined by a corridor below them. */
+hslam::sim::CWorld identicalRooms()
+{
+	hslam::sim::CWorld w;
+	addRoom(w, 0.0);
+	addRoom(w, 14.0);
+	addPolygon(w, {{-1, 0}, {23, 0}, {23, 2.5}, {22, 2.5}});  // corridor: bottom, right end
+	w.addSegment({{-1, 0}, {-1, 2.5}, {}});
+	w.addSegment({{-1, 2.5}, {0, 2.5}, {}});
+	w.addSegment({{8, 2.5}, {14, 2.5}, {}});
+	return w;
+}
+}  // namespace
+
+TEST(LoopClosure, IdenticalRoomIsNotTakenForTheOther)
+{
+	const auto world = identicalRooms();
+	const std::vector<TPoint2D> roomA = {{2, 4.5}, {6.2, 4.5}, {6.2, 7.0}, {2, 7.0}, {2, 4.5}, {6.2, 4.5}};
+	std::vector<TPoint2D> waypoints = roomA;
+	waypoints.insert(waypoints.end(), {{6.2, 1.25}, {20.2, 1.25}});
+	for (const auto& p : roomA) waypoints.push_back({p.x + 14.0, p.y});
+	std::reverse(waypoints.end() - static_cast<long>(roomA.size()), waypoints.end());  // enter B at its door side
+	const auto truth = keyframePath(waypoints);
+	size_t firstInB = 0;
+	while (truth[firstInB].x < 13.0) ++firstInB;
+	// a search wide enough to see room A from room B (as after a large drift)
+	TLoopClosureOptions lc;
+	lc.overlap_distance_m = 20.0;
+	lc.min_window_xy_m = lc.max_window_xy_m = 16.0;
+	lc.detect_every_n_keyframes = 2;
+	CGraphBackend backend({}, lc);
+	const auto r = runBackend(world, truth, TFrontEndErrors{}, backend, 3);
+	size_t wrongPlaceMatched = 0, crossAccepted = 0, accepted = 0;
+	std::map<std::string, int> reasons;
+	for (const auto& c : r.closures)
+	{
+		const bool cross = c.query_node >= firstInB && c.anchor_node < firstInB;
+		++reasons[(cross ? "room B -> room A: " : "same room: ") + c.reason];
+		if (cross && c.score >= lc.min_score) ++wrongPlaceMatched;
+		if (cross && c.accepted) ++crossAccepted;
+	}
+	expectClosuresNearTruth(r, accepted);
+	for (const auto& [why, n] : reasons) std::cout << why << ": " << n << "\n";
+	std::cout << "ATE before " << ate_m(r.frontend, truth) << " m, after " << ate_m(r.optimized, truth) << " m\n";
+	EXPECT_GT(wrongPlaceMatched, 0u);  // the wide search did find room A from room B ...
+	EXPECT_EQ(crossAccepted, 0u);  // ... and verification refused it
+	EXPECT_LT(ate_m(r.optimized, truth), ate_m(r.frontend, truth) + 0.02);
 }
