@@ -1,0 +1,127 @@
+/* hslam graph: multi-resolution correlative scan matching with
+ * branch-and-bound (Olson, "Real-time correlative scan matching", ICRA 2009;
+ * Hess et al., "Real-time loop closure in 2D LIDAR SLAM", ICRA 2016, section V,
+ * Cartographer's FastCorrelativeScanMatcher2D).
+ *
+ * The reference (a submap: several keyframes' points in one frame) is
+ * rasterised once into a likelihood field with max-pooled levels
+ * (CMultiResolutionGrid). A query (points in the robot frame) is matched over a
+ * window (x, y, yaw) around a guess: every rotation of the window (step from
+ * the farthest query point, so the far end moves at most one cell) and every
+ * integer cell offset; branch-and-bound over the levels finds the offset of
+ * highest mean likelihood exactly, visiting a tiny part of the window. The
+ * winner is refined below one cell on the bilinear field (parabola fits), and
+ * its covariance comes from the score surface around it (Olson section IV-C:
+ * the field read as a likelihood, exp(-chi2/2) weights over a neighbourhood).
+ *
+ * Points are std::vector<mrpt::math::TPoint2Df> (float x, y in metres): the
+ * query in the robot frame, the reference in the submap frame; the resulting
+ * pose is the robot's pose in the reference frame. No I/O. */
+#pragma once
+
+#include <hslam/graph/CMultiResolutionGrid.h>
+#include <mrpt/core/bits_math.h>
+#include <mrpt/math/TPose2D.h>
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace hslam::graph
+{
+using TPointCloud2D = std::vector<mrpt::math::TPoint2Df>;
+
+struct TCorrelativeMatcherOptions
+{
+	double resolution_m = 0.05;  //!< finest cell of the likelihood field
+	double kernel_sigma_m = 0.05;  //!< sigma of the field around each reference point
+	int levels = 7;  //!< finest + max-pooled levels (7: blocks up to 64 cells = 3.2 m at 5 cm)
+	double window_xy_m = 1.0;  //!< default half-width of the translation window
+	double window_yaw_rad = mrpt::DEG2RAD(30.0);  //!< default half-width of the rotation window
+	double max_query_range_m = 0;  //!< query points farther from the robot are dropped (0 = keep all)
+	double min_score = 0.3;  //!< no match below this mean likelihood (also the initial B&B bound)
+	double covariance_span_cells = 4;  //!< half-width (cells / angle steps) of the score surface for the covariance
+
+	/** The keys of the field and query (no window, no threshold). */
+	template <class V>
+	void visitGrid(V& v)
+	{
+		v.real("resolution_m", resolution_m, 0.01, 1.0);
+		v.real("kernel_sigma_m", kernel_sigma_m, 0.005, 1.0);
+		v.integer("levels", levels, 1, 12);
+		v.real("max_query_range_m", max_query_range_m, 0.0, 100.0);
+		v.real("covariance_span_cells", covariance_span_cells, 1.0, 20.0);
+	}
+	template <class V>
+	void visit(V& v)
+	{
+		visitGrid(v);
+		v.real("window_xy_m", window_xy_m, 0.0, 100.0);
+		v.degrees("window_yaw_deg", window_yaw_rad, 0.0, 180.0);
+		v.real("min_score", min_score, 0.0, 1.0);
+	}
+};
+
+/** Half-widths of a search window around the guess. */
+struct TSearchWindow
+{
+	double xy_m = 1.0;
+	double yaw_rad = mrpt::DEG2RAD(30.0);
+};
+
+/** Poses within xy_m and yaw_rad of `centre` are left out of the search (for
+ * the second-best peak of an ambiguity test). */
+struct TSearchExclusion
+{
+	mrpt::math::TPose2D centre;
+	double xy_m = 0.5;
+	double yaw_rad = mrpt::DEG2RAD(10.0);
+};
+
+struct TCorrelativeMatch
+{
+	bool found = false;  //!< a pose with score >= the minimum score exists in the window
+	mrpt::math::TPose2D pose;  //!< robot pose in the reference frame (refined)
+	double score = 0;  //!< mean likelihood of the query points at `pose`, 0..1
+	double hit_fraction = 0;  //!< fraction of query points within ~1.2 kernel sigma of a reference point
+	Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();  //!< of `pose` (x, y, yaw), m^2 / rad^2
+	size_t query_points = 0;  //!< points used after range filtering
+	size_t rotations = 0;  //!< rotations in the window
+	size_t nodes_scored = 0;  //!< B&B nodes scored (cost measure)
+};
+
+class CCorrelativeScanMatcher
+{
+   public:
+	using TOptions = TCorrelativeMatcherOptions;
+
+	explicit CCorrelativeScanMatcher(const TOptions& options = TOptions());
+
+	/** Builds the likelihood field of the reference points (submap frame). */
+	void setReference(const TPointCloud2D& referencePoints);
+	bool hasReference() const { return !m_grid.empty(); }
+	const CMultiResolutionGrid& grid() const { return m_grid; }
+
+	/** Best pose within the options' window around `guess`. */
+	TCorrelativeMatch match(const TPointCloud2D& query, const mrpt::math::TPose2D& guess) const;
+	/** Best pose within `window` around `guess`, optionally outside `exclude`
+	 * and only if its score reaches `minScore` (< 0: the options' min_score). */
+	TCorrelativeMatch match(const TPointCloud2D& query, const mrpt::math::TPose2D& guess, const TSearchWindow& window,
+							const TSearchExclusion* exclude = nullptr, double minScore = -1) const;
+
+	/** Mean likelihood of the query at `pose` (bilinear on the finest level),
+	 * and optionally the hit fraction. */
+	double scoreAt(const TPointCloud2D& query, const mrpt::math::TPose2D& pose, double* hitFraction = nullptr) const;
+
+	const TOptions& options() const { return m_options; }
+
+   private:
+	TPointCloud2D filteredQuery(const TPointCloud2D& query) const;
+	void refine(const TPointCloud2D& query, double angleStep_rad, TCorrelativeMatch& m) const;
+	Eigen::Matrix3d scoreSurfaceCovariance(const TPointCloud2D& query, const mrpt::math::TPose2D& pose,
+										   double angleStep_rad) const;
+
+	TOptions m_options;
+	CMultiResolutionGrid m_grid;
+};
+
+}  // namespace hslam::graph

@@ -1,0 +1,110 @@
+/* hslam graph: the back-end the mapping pipeline calls once per keyframe
+ * (issue 13, parts 1-3).
+ *
+ * addKeyframe() adds a node at the previous node's optimised pose composed
+ * with the front-end's motion since the previous keyframe, and a sequential
+ * edge whose information is the inverse of the front-end matcher's covariance
+ * (floored); across an odometry gap the edge is weak (a large covariance is
+ * added: never rigid). Then loop closures are searched and verified
+ * (CLoopClosureDetector); the graph is optimised only when a closure is
+ * accepted. Per-keyframe cost stays bounded: a linear scan over submap
+ * anchors (no matching), at most max_candidates matches, and optimisation only
+ * on closures.
+ *
+ * The chain covariance of every node (world frame, propagated along the
+ * sequential edges; replaced by the closure's when that is tighter) gives the
+ * relative uncertainty that sizes the search window and gates consistency. */
+#pragma once
+
+#include <hslam/graph/CLoopClosureDetector.h>
+#include <hslam/graph/CPoseGraph.h>
+
+#include <vector>
+
+namespace hslam::graph
+{
+struct TGraphBackendOptions
+{
+	TPoseGraphOptions graph;  //!< optimiser keys, same INI section
+	double min_sequential_xy_std_m = 0.01;  //!< floor of the front-end's translation sigma
+	double min_sequential_yaw_std_rad = mrpt::DEG2RAD(0.25);  //!< floor of its rotation sigma
+	double weak_xy_std_m = 1.0;  //!< added to an edge across an odometry gap
+	double weak_yaw_std_rad = mrpt::DEG2RAD(30.0);
+	bool detect_loops = true;  //!< false: the graph only records the front-end's chain
+
+	template <class V>
+	void visit(V& v)
+	{
+		graph.visit(v);
+		v.real("min_sequential_xy_std_m", min_sequential_xy_std_m, 1e-4, 10.0);
+		v.degrees("min_sequential_yaw_std_deg", min_sequential_yaw_std_rad, 1e-3, 90.0);
+		v.real("weak_xy_std_m", weak_xy_std_m, 0.0, 1000.0);
+		v.degrees("weak_yaw_std_deg", weak_yaw_std_rad, 0.0, 180.0);
+		v.flag("detect_loops", detect_loops);
+	}
+};
+
+/** What the front-end hands over for one keyframe. */
+struct TKeyframe
+{
+	int64_t id = -1;  //!< the front-end's keyframe id
+	mrpt::math::TPose2D pose;  //!< front-end (online) world pose
+	/** Covariance of the motion from the previous keyframe, in the previous
+	 * keyframe's frame (x, y, yaw), from the front-end matcher; ignored for
+	 * the first keyframe. */
+	Eigen::Matrix3d relative_covariance = Eigen::Matrix3d::Identity() * 1e-4;
+	bool after_gap = false;  //!< odometry gap / lost tracking before this keyframe: weak edge
+	int group = -1;  //!< tile index
+	TPointCloud2D points;  //!< scan points in the robot frame (people already removed)
+};
+
+struct TKeyframeResult
+{
+	size_t node = 0;
+	std::vector<TLoopClosure> closures;  //!< tested at this keyframe (accepted and rejected)
+	bool optimized = false;
+	TOptimizationReport optimization;
+	double time_ms = 0;  //!< whole addKeyframe()
+};
+
+struct TBackendTiming
+{
+	size_t keyframes = 0, candidates_tested = 0, closures_accepted = 0, optimizations = 0;
+	double total_ms = 0, detect_ms = 0, optimize_ms = 0;
+	double max_keyframe_ms = 0, max_optimize_ms = 0;
+};
+
+class CGraphBackend
+{
+   public:
+	CGraphBackend(const TGraphBackendOptions& options = {}, const TLoopClosureOptions& loopOptions = {});
+
+	TKeyframeResult addKeyframe(const TKeyframe& keyframe);
+
+	const CPoseGraph& graph() const { return m_graph; }
+	/** Optimised world pose of every keyframe, in the order added. */
+	std::vector<mrpt::math::TPose2D> optimizedPoses() const;
+	/** Transform T with optimised = T (+) front-end pose, for the latest
+	 * keyframe (identity before any closure). */
+	mrpt::math::TPose2D correction() const;
+	/** Every tested closure so far; status updated if the optimiser dropped it. */
+	const std::vector<TLoopClosure>& closures() const { return m_closures; }
+	const std::vector<TSubmap>& submaps() const { return m_detector.submaps(); }
+	const std::vector<Eigen::Matrix3d>& chainCovariances() const { return m_chainCov; }
+	const TBackendTiming& timing() const { return m_timing; }
+
+   private:
+	size_t addNodeAndSequentialEdge(const TKeyframe& keyframe);
+	void addClosures(std::vector<TLoopClosure>& tested);
+	void markDroppedClosures(const TOptimizationReport& report);
+
+	TGraphBackendOptions m_options;
+	CPoseGraph m_graph;
+	CLoopClosureDetector m_detector;
+	std::vector<Eigen::Matrix3d> m_chainCov;
+	std::vector<mrpt::math::TPose2D> m_frontendPoses;
+	std::vector<TLoopClosure> m_closures;
+	TBackendTiming m_timing;
+};
+
+}  // namespace hslam::graph

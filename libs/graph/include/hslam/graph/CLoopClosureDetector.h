@@ -1,0 +1,165 @@
+/* hslam graph: loop-closure detection and verification (issue 13, part 2).
+ *
+ * Keyframes are grouped into submaps of `submap_keyframes` consecutive
+ * keyframes; a finished submap keeps its points in the frame of its middle
+ * keyframe (the anchor), voxel-thinned to the matcher's resolution, and its
+ * likelihood field is built when first matched (kept in a small LRU cache).
+ *
+ * Candidates for the current keyframe: finished submaps not among the recent
+ * ones whose anchor lies within the overlap distance plus the search window of
+ * the current estimate. The window is `window_sigmas` times the relative
+ * uncertainty of the current pose with respect to the anchor (from the
+ * sequential chain: small after a short loop, large after a long loop or an
+ * odometry gap, so a large drift is still searched), clamped to the options.
+ *
+ * Verification (every test must pass; a rejected candidate keeps its reason):
+ *  1. score: the correlative match's mean likelihood >= min_score and hit
+ *     fraction >= min_hit_fraction (overlap), with >= min_query_points points;
+ *  2. uniqueness: no other pose in the window (outside a small exclusion)
+ *     reaches ambiguity_ratio x the best score (repeated rooms, corridors);
+ *  3. ICP agreement: MRPT CICP from the correlative pose converges with
+ *     goodness >= min_icp_goodness and moves less than the agreement limits;
+ *  4. consistency: the correction the closure implies for the current pose is
+ *     within the chi2 gate of the relative covariance of the odometry chain
+ *     plus the closure's covariance.
+ * Then the back-end adds the edge and optimises; the graph's robust step may
+ * still drop it (reason "dropped by optimiser"). */
+#pragma once
+
+#include <hslam/graph/CCorrelativeScanMatcher.h>
+#include <hslam/graph/CPoseGraph.h>
+
+#include <list>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace hslam::graph
+{
+struct TLoopClosureOptions
+{
+	TCorrelativeMatcherOptions matcher;  //!< field and query keys (resolution_m, kernel_sigma_m, levels, ...)
+	int submap_keyframes = 10;  //!< consecutive keyframes per submap
+	int min_separation_keyframes = 30;  //!< submaps with a keyframe this recent are not candidates
+	int detect_every_n_keyframes = 1;  //!< search at every n-th keyframe
+	int max_candidates = 3;  //!< submaps matched per search (nearest first)
+	double overlap_distance_m = 6.0;  //!< anchor within this (plus the window) of the current pose
+	double window_sigmas = 3.0;  //!< window = this x the relative standard deviation
+	double min_window_xy_m = 0.5, max_window_xy_m = 4.0;
+	double min_window_yaw_rad = mrpt::DEG2RAD(10.0), max_window_yaw_rad = mrpt::DEG2RAD(45.0);
+	double min_score = 0.55;  //!< mean likelihood of the query points
+	double min_hit_fraction = 0.6;  //!< fraction of query points on the submap (overlap)
+	int min_query_points = 50;
+	double ambiguity_ratio = 0.9;  //!< a second peak at this fraction of the best rejects the closure
+	double ambiguity_xy_m = 0.5, ambiguity_yaw_rad = mrpt::DEG2RAD(10.0);  //!< what counts as "another" peak
+	double min_icp_goodness = 0.7;
+	double icp_max_shift_m = 0.15, icp_max_shift_yaw_rad = mrpt::DEG2RAD(2.0);
+	double consistency_chi2 = 16.27;  //!< 3-dof chi2 gate (99.9 %) of the implied correction
+	int max_cached_fields = 16;  //!< likelihood fields kept in memory
+
+	template <class V>
+	void visit(V& v)
+	{
+		matcher.visitGrid(v);
+		v.integer("submap_keyframes", submap_keyframes, 1, 1000);
+		v.integer("min_separation_keyframes", min_separation_keyframes, 1, 100000);
+		v.integer("detect_every_n_keyframes", detect_every_n_keyframes, 1, 1000);
+		v.integer("max_candidates", max_candidates, 1, 100);
+		v.real("overlap_distance_m", overlap_distance_m, 0.0, 100.0);
+		v.real("window_sigmas", window_sigmas, 0.0, 100.0);
+		v.real("min_window_xy_m", min_window_xy_m, 0.0, 100.0);
+		v.real("max_window_xy_m", max_window_xy_m, 0.0, 100.0);
+		v.degrees("min_window_yaw_deg", min_window_yaw_rad, 0.0, 180.0);
+		v.degrees("max_window_yaw_deg", max_window_yaw_rad, 0.0, 180.0);
+		v.real("min_score", min_score, 0.0, 1.0);
+		v.real("min_hit_fraction", min_hit_fraction, 0.0, 1.0);
+		v.integer("min_query_points", min_query_points, 1, 100000);
+		v.real("ambiguity_ratio", ambiguity_ratio, 0.0, 1.0);
+		v.real("ambiguity_xy_m", ambiguity_xy_m, 0.0, 100.0);
+		v.degrees("ambiguity_yaw_deg", ambiguity_yaw_rad, 0.0, 180.0);
+		v.real("min_icp_goodness", min_icp_goodness, 0.0, 1.0);
+		v.real("icp_max_shift_m", icp_max_shift_m, 0.0, 10.0);
+		v.degrees("icp_max_shift_deg", icp_max_shift_yaw_rad, 0.0, 180.0);
+		v.real("consistency_chi2", consistency_chi2, 0.0, 1e9);
+		v.integer("max_cached_fields", max_cached_fields, 1, 10000);
+	}
+};
+
+/** Consecutive keyframes with their points in the anchor's frame. */
+struct TSubmap
+{
+	size_t first_node = 0, last_node = 0, anchor_node = 0;
+	TPointCloud2D points;  //!< anchor frame, thinned to one point per cell
+};
+
+/** A tested candidate: accepted or rejected, with its figures. */
+struct TLoopClosure
+{
+	size_t query_node = 0, anchor_node = 0, submap = 0;
+	int64_t query_keyframe_id = -1, anchor_keyframe_id = -1;
+	mrpt::math::TPose2D relative;  //!< measured pose of the query in the anchor's frame
+	Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();  //!< of `relative`
+	mrpt::math::TPose2D query_pose_estimate;  //!< world pose of the query when tested
+	mrpt::math::TPose2D query_pose_matched;  //!< world pose the closure implies (anchor (+) relative)
+	mrpt::math::TPose2D anchor_pose;  //!< world pose of the anchor when tested
+	double window_xy_m = 0, window_yaw_rad = 0;
+	double score = 0, hit_fraction = 0, second_score = 0;
+	double icp_goodness = 0, icp_shift_m = 0, icp_shift_yaw_rad = 0;
+	double consistency_chi2 = 0;
+	bool accepted = false;
+	std::string reason;  //!< "accepted" or why not
+	double match_ms = 0;
+	long edge = -1;  //!< graph edge index once added
+};
+
+/** The CSV header and one row per closure (for the pipeline's closures.csv). */
+std::string loopClosureCsvHeader();
+std::string loopClosureCsvRow(const TLoopClosure& c);
+
+class CLoopClosureDetector
+{
+   public:
+	using TOptions = TLoopClosureOptions;
+
+	explicit CLoopClosureDetector(const TOptions& options = TOptions());
+	~CLoopClosureDetector();
+
+	/** Records the points (robot frame) of a node just added to `graph`;
+	 * closes a submap every submap_keyframes nodes (poses taken from `graph`). */
+	void addKeyframe(size_t node, const TPointCloud2D& points, const CPoseGraph& graph);
+
+	/** Candidates for `node` (its points given to addKeyframe) and their
+	 * verification. `chainCovariance[i]` is node i's world-frame covariance
+	 * propagated along the sequential edges. */
+	std::vector<TLoopClosure> detect(size_t node, const CPoseGraph& graph,
+									 const std::vector<Eigen::Matrix3d>& chainCovariance);
+
+	const std::vector<TSubmap>& submaps() const { return m_submaps; }
+	const TOptions& options() const { return m_options; }
+
+   private:
+	struct TCandidate;
+	std::vector<TCandidate> candidates(size_t node, const CPoseGraph& graph,
+									   const std::vector<Eigen::Matrix3d>& chainCovariance) const;
+	TLoopClosure verify(const TCandidate& c, size_t node, const CPoseGraph& graph);
+	bool matchAndCheckUniqueness(const CCorrelativeScanMatcher& m, const TCandidate& c, TLoopClosure& out) const;
+	bool refineWithIcp(const TCandidate& c, TLoopClosure& out) const;
+	void closeSubmap(const CPoseGraph& graph);
+	const CCorrelativeScanMatcher& fieldOf(size_t submap);
+
+	TOptions m_options;
+	std::vector<TSubmap> m_submaps;
+	std::vector<std::pair<size_t, TPointCloud2D>> m_pending;  //!< nodes of the open submap
+	TPointCloud2D m_queryPoints;  //!< points of the last added keyframe
+	size_t m_queryNode = 0;
+	std::list<std::pair<size_t, std::unique_ptr<CCorrelativeScanMatcher>>> m_fieldCache;  //!< most recent first
+};
+
+/** Covariance of node i relative to node a, in the world frame, from the
+ * chain covariances: Sigma_i - J Sigma_a J^T (J = d(a (+) r)/da), eigenvalues
+ * floored at `floor`. */
+Eigen::Matrix3d relativeChainCovariance(const mrpt::math::TPose2D& a, const Eigen::Matrix3d& covA,
+										const mrpt::math::TPose2D& i, const Eigen::Matrix3d& covI,
+										double floor = 1e-8);
+
+}  // namespace hslam::graph

@@ -1,0 +1,197 @@
+#include <hslam/graph/CCorrelativeScanMatcher.h>
+#include <mrpt/math/wrap2pi.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "branch_and_bound.h"
+
+namespace hslam::graph
+{
+namespace
+{
+double farthestRange(const TPointCloud2D& points)
+{
+	double r2 = 0;
+	for (const auto& p : points) r2 = std::max(r2, static_cast<double>(p.x) * p.x + static_cast<double>(p.y) * p.y);
+	return std::sqrt(r2);
+}
+
+/** Rotation step so that the farthest point moves at most one cell (Hess et al. eq. 7). */
+double angularStep(double resolution_m, double farthest_m)
+{
+	const double r = std::max(farthest_m, 2.0 * resolution_m);
+	return std::acos(1.0 - resolution_m * resolution_m / (2.0 * r * r));
+}
+
+std::vector<detail::TRotatedQuery> rotateQuery(const CMultiResolutionGrid& grid, const TPointCloud2D& query,
+											   const mrpt::math::TPose2D& guess, int halfCount, double step_rad)
+{
+	std::vector<detail::TRotatedQuery> rotations(static_cast<size_t>(2 * halfCount + 1));
+	for (int j = -halfCount; j <= halfCount; ++j)
+	{
+		auto& r = rotations[static_cast<size_t>(j + halfCount)];
+		r.yaw_rad = guess.phi + j * step_rad;
+		const double c = std::cos(r.yaw_rad), s = std::sin(r.yaw_rad);
+		r.cx.reserve(query.size()), r.cy.reserve(query.size());
+		for (const auto& p : query)
+		{
+			r.cx.push_back(grid.cellX(guess.x + c * p.x - s * p.y));
+			r.cy.push_back(grid.cellY(guess.y + s * p.x + c * p.y));
+		}
+	}
+	return rotations;
+}
+
+/** Bilinear likelihood (0..1) of the finest level at (x, y); cell centres at (i + 0.5) res. */
+double bilinear(const CMultiResolutionGrid& g, double x, double y)
+{
+	const double res = g.resolution_m();
+	// continuous cell coordinates with cell centres at integers
+	const double u = (x - g.originX_m()) / res - 0.5, v = (y - g.originY_m()) / res - 0.5;
+	const int i0 = static_cast<int>(std::floor(u)), j0 = static_cast<int>(std::floor(v));
+	const double fx = u - i0, fy = v - j0;
+	const double v00 = g.value(0, i0, j0), v10 = g.value(0, i0 + 1, j0);
+	const double v01 = g.value(0, i0, j0 + 1), v11 = g.value(0, i0 + 1, j0 + 1);
+	return ((1 - fx) * (1 - fy) * v00 + fx * (1 - fy) * v10 + (1 - fx) * fy * v01 + fx * fy * v11) / 255.0;
+}
+
+/** Likelihood of every query point at `pose`. */
+void pointLikelihoods(const CMultiResolutionGrid& g, const TPointCloud2D& query, const mrpt::math::TPose2D& pose,
+					  std::vector<double>& out)
+{
+	out.resize(query.size());
+	const double c = std::cos(pose.phi), s = std::sin(pose.phi);
+	for (size_t i = 0; i < query.size(); ++i)
+	{
+		const auto& p = query[i];
+		out[i] = bilinear(g, pose.x + c * p.x - s * p.y, pose.y + s * p.x + c * p.y);
+	}
+}
+}  // namespace
+
+CCorrelativeScanMatcher::CCorrelativeScanMatcher(const TOptions& options) : m_options(options) {}
+
+void CCorrelativeScanMatcher::setReference(const TPointCloud2D& referencePoints)
+{
+	m_grid.build(referencePoints, m_options.resolution_m, m_options.kernel_sigma_m, m_options.levels);
+}
+
+TPointCloud2D CCorrelativeScanMatcher::filteredQuery(const TPointCloud2D& query) const
+{
+	if (m_options.max_query_range_m <= 0) return query;
+	TPointCloud2D out;
+	const float r2 = static_cast<float>(m_options.max_query_range_m * m_options.max_query_range_m);
+	for (const auto& p : query)
+		if (p.x * p.x + p.y * p.y <= r2) out.push_back(p);
+	return out;
+}
+
+TCorrelativeMatch CCorrelativeScanMatcher::match(const TPointCloud2D& query, const mrpt::math::TPose2D& guess) const
+{
+	return match(query, guess, TSearchWindow{m_options.window_xy_m, m_options.window_yaw_rad});
+}
+
+TCorrelativeMatch CCorrelativeScanMatcher::match(const TPointCloud2D& rawQuery, const mrpt::math::TPose2D& guess,
+												 const TSearchWindow& window, const TSearchExclusion* exclude,
+												 double minScore) const
+{
+	TCorrelativeMatch result;
+	const TPointCloud2D query = filteredQuery(rawQuery);
+	result.query_points = query.size();
+	if (m_grid.empty() || query.empty()) return result;
+	const double res = m_grid.resolution_m();
+	const double step = angularStep(res, farthestRange(query));
+	const int halfRotations = static_cast<int>(std::ceil(window.yaw_rad / step));
+	const int windowCells = static_cast<int>(std::ceil(window.xy_m / res));
+	const auto rotations = rotateQuery(m_grid, query, guess, halfRotations, step);
+	result.rotations = rotations.size();
+	std::function<bool(int, int, int)> excluded;
+	if (exclude)
+		excluded = [&](int r, int dx, int dy) {
+			const double ex = guess.x + dx * res - exclude->centre.x, ey = guess.y + dy * res - exclude->centre.y;
+			const double eyaw = mrpt::math::wrapToPi(rotations[static_cast<size_t>(r)].yaw_rad - exclude->centre.phi);
+			return std::hypot(ex, ey) <= exclude->xy_m && std::abs(eyaw) <= exclude->yaw_rad;
+		};
+	const float bound = static_cast<float>(minScore < 0 ? m_options.min_score : minScore);
+	const auto found = detail::branchAndBound(m_grid, rotations, windowCells, bound, excluded);
+	result.nodes_scored = found.nodesScored;
+	if (!found.found) return result;
+	result.found = true;
+	result.pose = {guess.x + found.best.dx * res, guess.y + found.best.dy * res,
+				   rotations[static_cast<size_t>(found.best.rotation)].yaw_rad};
+	refine(query, step, result);
+	result.covariance = scoreSurfaceCovariance(query, result.pose, step);
+	return result;
+}
+
+double CCorrelativeScanMatcher::scoreAt(const TPointCloud2D& query, const mrpt::math::TPose2D& pose,
+										double* hitFraction) const
+{
+	if (m_grid.empty() || query.empty()) return 0;
+	std::vector<double> l;
+	pointLikelihoods(m_grid, query, pose, l);
+	double sum = 0;
+	size_t hits = 0;
+	for (double v : l) sum += v, hits += v >= 0.5 ? 1 : 0;
+	if (hitFraction) *hitFraction = static_cast<double>(hits) / l.size();
+	return sum / l.size();
+}
+
+void CCorrelativeScanMatcher::refine(const TPointCloud2D& query, double angleStep_rad, TCorrelativeMatch& m) const
+{
+	// Coordinate-wise parabola fits on the bilinear field with shrinking steps:
+	// the B&B leaf is exact only to one cell and one angle step.
+	double h[3] = {0.5 * m_grid.resolution_m(), 0.5 * m_grid.resolution_m(), 0.5 * angleStep_rad};
+	auto at = [&](const mrpt::math::TPose2D& p) { return scoreAt(query, p); };
+	for (int iter = 0; iter < 4; ++iter, h[0] *= 0.5, h[1] *= 0.5, h[2] *= 0.5)
+		for (int axis = 0; axis < 3; ++axis)
+		{
+			auto minus = m.pose, plus = m.pose;
+			minus[axis] -= h[axis], plus[axis] += h[axis];
+			const double sm = at(minus), s0 = at(m.pose), sp = at(plus);
+			const double curvature = sm - 2 * s0 + sp;
+			if (curvature >= 0) continue;  // not a maximum along this axis
+			m.pose[axis] += std::clamp(0.5 * h[axis] * (sm - sp) / curvature, -h[axis], h[axis]);
+		}
+	m.score = scoreAt(query, m.pose, &m.hit_fraction);
+}
+
+Eigen::Matrix3d CCorrelativeScanMatcher::scoreSurfaceCovariance(const TPointCloud2D& query,
+																const mrpt::math::TPose2D& pose,
+																double angleStep_rad) const
+{
+	// Olson 2009 IV-C: each point's field value read as exp(-d^2 / 2 sigma^2),
+	// the pose likelihood exp(-chi2 / 2) sampled over a neighbourhood.
+	const int k = static_cast<int>(m_options.covariance_span_cells);
+	const double res = m_grid.resolution_m(), floorL = std::exp(-4.5);
+	std::vector<Eigen::Vector3d> offsets;
+	std::vector<double> chi2;
+	std::vector<double> l;
+	for (int i = -k; i <= k; ++i)
+		for (int j = -k; j <= k; ++j)
+			for (int a = -k; a <= k; ++a)
+			{
+				const Eigen::Vector3d d(i * res, j * res, a * angleStep_rad);
+				pointLikelihoods(m_grid, query, {pose.x + d.x(), pose.y + d.y(), pose.phi + d.z()}, l);
+				double c = 0;
+				for (double v : l) c += -2.0 * std::log(std::max(v, floorL));
+				offsets.push_back(d), chi2.push_back(c);
+			}
+	const double best = *std::min_element(chi2.begin(), chi2.end());
+	double wsum = 0;
+	Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+	Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
+	for (size_t n = 0; n < offsets.size(); ++n)
+	{
+		const double w = std::exp(-0.5 * (chi2[n] - best));
+		wsum += w, mean += w * offsets[n], second += w * offsets[n] * offsets[n].transpose();
+	}
+	mean /= wsum;
+	Eigen::Matrix3d cov = second / wsum - mean * mean.transpose();
+	// the discretisation itself: a uniform error over half a cell / step
+	cov(0, 0) += res * res / 12, cov(1, 1) += res * res / 12, cov(2, 2) += angleStep_rad * angleStep_rad / 12;
+	return cov;
+}
+
+}  // namespace hslam::graph

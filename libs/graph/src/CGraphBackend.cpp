@@ -1,0 +1,148 @@
+#include <hslam/graph/CGraphBackend.h>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <chrono>
+
+namespace hslam::graph
+{
+namespace
+{
+double msSince(std::chrono::steady_clock::time_point t0)
+{
+	return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/** Jacobians of a (+) d with respect to a and to d (world frame). */
+void compositionJacobians(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& d, Eigen::Matrix3d& Ja,
+						  Eigen::Matrix3d& Jd)
+{
+	const double c = std::cos(a.phi), s = std::sin(a.phi);
+	Ja = Eigen::Matrix3d::Identity();
+	Ja(0, 2) = -s * d.x - c * d.y, Ja(1, 2) = c * d.x - s * d.y;
+	Jd = Eigen::Matrix3d::Identity();
+	Jd(0, 0) = c, Jd(0, 1) = -s, Jd(1, 0) = s, Jd(1, 1) = c;
+}
+}  // namespace
+
+CGraphBackend::CGraphBackend(const TGraphBackendOptions& options, const TLoopClosureOptions& loopOptions)
+	: m_options(options), m_graph(options.graph), m_detector(loopOptions)
+{
+}
+
+size_t CGraphBackend::addNodeAndSequentialEdge(const TKeyframe& kf)
+{
+	if (m_graph.nodeCount() == 0)
+	{
+		m_frontendPoses.push_back(kf.pose);
+		m_chainCov.push_back(Eigen::Matrix3d::Zero());
+		return m_graph.addNode(kf.id, kf.pose, kf.group);
+	}
+	const size_t prev = m_graph.nodeCount() - 1;
+	const auto rel = relativePose(m_frontendPoses.back(), kf.pose);
+	Eigen::Matrix3d cov = 0.5 * (kf.relative_covariance + kf.relative_covariance.transpose());
+	cov(0, 0) = std::max(cov(0, 0), m_options.min_sequential_xy_std_m * m_options.min_sequential_xy_std_m);
+	cov(1, 1) = std::max(cov(1, 1), m_options.min_sequential_xy_std_m * m_options.min_sequential_xy_std_m);
+	cov(2, 2) = std::max(cov(2, 2), m_options.min_sequential_yaw_std_rad * m_options.min_sequential_yaw_std_rad);
+	if (kf.after_gap)
+		cov += Eigen::Vector3d(m_options.weak_xy_std_m * m_options.weak_xy_std_m,
+							   m_options.weak_xy_std_m * m_options.weak_xy_std_m,
+							   m_options.weak_yaw_std_rad * m_options.weak_yaw_std_rad)
+				   .asDiagonal();
+	const auto& prevPose = m_graph.nodes()[prev].pose;
+	const size_t node = m_graph.addNode(kf.id, composePose(prevPose, rel), kf.group);
+	TGraphEdge e;
+	e.from = prev, e.to = node, e.relative = rel, e.information = cov.inverse();
+	e.kind = kf.after_gap ? EEdgeKind::weak : EEdgeKind::sequential;
+	m_graph.addEdge(e);
+	Eigen::Matrix3d Ja, Jd;
+	compositionJacobians(prevPose, rel, Ja, Jd);
+	m_chainCov.push_back(Ja * m_chainCov[prev] * Ja.transpose() + Jd * cov * Jd.transpose());
+	m_frontendPoses.push_back(kf.pose);
+	return node;
+}
+
+TKeyframeResult CGraphBackend::addKeyframe(const TKeyframe& kf)
+{
+	const auto t0 = std::chrono::steady_clock::now();
+	TKeyframeResult result;
+	result.node = addNodeAndSequentialEdge(kf);
+	m_detector.addKeyframe(result.node, kf.points, m_graph);
+	if (m_options.detect_loops)
+	{
+		const auto td = std::chrono::steady_clock::now();
+		result.closures = m_detector.detect(result.node, m_graph, m_chainCov);
+		m_timing.detect_ms += msSince(td);
+		m_timing.candidates_tested += result.closures.size();
+		addClosures(result.closures);
+	}
+	const bool anyAccepted =
+		std::any_of(result.closures.begin(), result.closures.end(), [](const TLoopClosure& c) { return c.accepted; });
+	if (anyAccepted)
+	{
+		result.optimization = m_graph.optimize();
+		result.optimized = true;
+		markDroppedClosures(result.optimization);
+		++m_timing.optimizations;
+		m_timing.optimize_ms += result.optimization.time_ms;
+		m_timing.max_optimize_ms = std::max(m_timing.max_optimize_ms, result.optimization.time_ms);
+	}
+	for (auto& c : result.closures)  // report the status after the optimiser
+		for (const auto& stored : m_closures)
+			if (c.edge >= 0 && stored.edge == c.edge) c.accepted = stored.accepted, c.reason = stored.reason;
+	result.time_ms = msSince(t0);
+	++m_timing.keyframes;
+	m_timing.total_ms += result.time_ms;
+	m_timing.max_keyframe_ms = std::max(m_timing.max_keyframe_ms, result.time_ms);
+	return result;
+}
+
+void CGraphBackend::addClosures(std::vector<TLoopClosure>& tested)
+{
+	for (auto& c : tested)
+	{
+		if (c.accepted)
+		{
+			TGraphEdge e;
+			e.from = c.anchor_node, e.to = c.query_node, e.relative = c.relative, e.kind = EEdgeKind::loop;
+			e.information = c.covariance.inverse();
+			c.edge = static_cast<long>(m_graph.addEdge(e));
+			++m_timing.closures_accepted;
+			// the closure may be a tighter path to the anchor than the chain
+			Eigen::Matrix3d Ja, Jd;
+			compositionJacobians(c.anchor_pose, c.relative, Ja, Jd);
+			const Eigen::Matrix3d viaClosure =
+				Ja * m_chainCov[c.anchor_node] * Ja.transpose() + Jd * c.covariance * Jd.transpose();
+			if (viaClosure.trace() < m_chainCov[c.query_node].trace()) m_chainCov[c.query_node] = viaClosure;
+		}
+		m_closures.push_back(c);
+	}
+}
+
+void CGraphBackend::markDroppedClosures(const TOptimizationReport& report)
+{
+	for (size_t edge : report.dropped_edges)
+		for (auto& c : m_closures)
+			if (c.edge == static_cast<long>(edge) && c.accepted)
+			{
+				c.accepted = false;
+				c.reason = "dropped by optimiser";
+				if (m_timing.closures_accepted > 0) --m_timing.closures_accepted;
+			}
+}
+
+std::vector<mrpt::math::TPose2D> CGraphBackend::optimizedPoses() const
+{
+	std::vector<mrpt::math::TPose2D> out;
+	for (const auto& n : m_graph.nodes()) out.push_back(n.pose);
+	return out;
+}
+
+mrpt::math::TPose2D CGraphBackend::correction() const
+{
+	if (m_frontendPoses.empty()) return {0, 0, 0};
+	// T = optimised (+) frontend^-1
+	return composePose(m_graph.nodes().back().pose, relativePose(m_frontendPoses.back(), {0, 0, 0}));
+}
+
+}  // namespace hslam::graph

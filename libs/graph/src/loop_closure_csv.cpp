@@ -1,0 +1,28 @@
+#include <hslam/graph/CLoopClosureDetector.h>
+#include <mrpt/core/bits_math.h>
+
+#include <sstream>
+
+namespace hslam::graph
+{
+std::string loopClosureCsvHeader()
+{
+	return "query_keyframe,anchor_keyframe,submap,accepted,reason,score,hit_fraction,second_score,icp_goodness,"
+		   "icp_shift_m,icp_shift_deg,consistency_chi2,window_xy_m,window_yaw_deg,rel_x_m,rel_y_m,rel_yaw_deg,"
+		   "query_x_m,query_y_m,matched_x_m,matched_y_m,anchor_x_m,anchor_y_m,match_ms";
+}
+
+std::string loopClosureCsvRow(const TLoopClosure& c)
+{
+	std::ostringstream o;
+	o.precision(6);
+	o << c.query_keyframe_id << ',' << c.anchor_keyframe_id << ',' << c.submap << ',' << (c.accepted ? 1 : 0) << ','
+	  << c.reason << ',' << c.score << ',' << c.hit_fraction << ',' << c.second_score << ',' << c.icp_goodness << ','
+	  << c.icp_shift_m << ',' << mrpt::RAD2DEG(c.icp_shift_yaw_rad) << ',' << c.consistency_chi2 << ','
+	  << c.window_xy_m << ',' << mrpt::RAD2DEG(c.window_yaw_rad) << ',' << c.relative.x << ',' << c.relative.y << ','
+	  << mrpt::RAD2DEG(c.relative.phi) << ',' << c.query_pose_estimate.x << ',' << c.query_pose_estimate.y << ','
+	  << c.query_pose_matched.x << ',' << c.query_pose_matched.y << ',' << c.anchor_pose.x << ',' << c.anchor_pose.y
+	  << ',' << c.match_ms;
+	return o.str();
+}
+}  // namespace hslam::graph
