@@ -9,6 +9,7 @@ packages=(
   libopencv-dev libeigen3-dev zlib1g-dev
   libgtest-dev libbenchmark-dev
   python3                             # scripts/compare-carmen.sh (rawlog rewriting for rbpf-slam)
+  clang-14 libfuzzer-14-dev           # scripts/sanitize-and-fuzz.sh: ASan/UBSan build and libFuzzer targets
 )
 
 missing=()

@@ -1,6 +1,7 @@
 #include <hslam/common/CProgressBar.h>
 #include <hslam/common/config_overrides.h>
 #include <hslam/common/options_io.h>
+#include <hslam/common/output_folder.h>
 #include <hslam/eval/evaluate_trajectory.h>
 #include <hslam/eval/evaluation_json.h>
 #include <hslam/eval/evaluation_table.h>
@@ -40,7 +41,7 @@ TBatchResult CBatchProcessor::run()
 	if (outputOptions.write_sensor_maps) pipeline.keepSensorMaps();
 	if (outputOptions.dynamic_debug_images)
 		pipeline.keepDynamicDebugFrames(static_cast<size_t>(outputOptions.dynamic_debug_max_images));
-	std::filesystem::create_directories(m_request.output_dir);
+	common::COutputFolder folder(m_request.output_dir, m_request.overwrite);  // lock, refuse foreign, clean stale
 	addDebugFrameWriter(pipeline, outputOptions.debug_frames_every);
 
 	TBatchResult result;
@@ -50,6 +51,7 @@ TBatchResult CBatchProcessor::run()
 	writeEffectiveConfig(pipeline, outputOptions);
 	printSummary(pipeline, result);
 	if (!m_request.ground_truth_tum.empty()) evaluate(pipeline, result);
+	folder.finish();
 	return result;
 }
 
@@ -75,6 +77,9 @@ void CBatchProcessor::readRawlog(CMappingPipeline& pipeline, TBatchResult& resul
 	{
 		result.input_error = e.what();
 	}
+	// Corrupt parts skipped by resynchronisation: reported like a fault.
+	if (!reader.problems().empty())
+		result.input_error = reader.problemSummary() + (result.input_error.empty() ? "" : "\n" + result.input_error);
 	if (m_request.show_progress) progress.finish();
 }
 
