@@ -14,6 +14,7 @@ packages=(
   help2man                            # man pages of the apps, generated from --help
   parallel                            # scripts/batch-process.sh (falls back to xargs -P without it)
   dpkg-dev file                       # cpack -G DEB: dpkg-shlibdeps computes Depends:
+  clang-14 libfuzzer-14-dev           # scripts/sanitize-and-fuzz.sh: ASan/UBSan build and libFuzzer targets
 )
 
 missing=()

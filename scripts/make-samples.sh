@@ -29,7 +29,7 @@ for name in lab corridor umbmark floor laser-only odometry-gap people-crossing c
 		{ echo "$name: rawlog-edit --info cannot read $out/sim.rawlog" >&2; exit 1; }
 	mkdir -p "results/samples/$name"
 	"$BUILD/bin/hslam-process" -q -c config_ini/hslam-default.ini -i "$out/sim.rawlog" \
-		-o "results/samples/$name" --ground-truth "$out/ground_truth.tum" >"results/samples/$name/process.log"
+		-o "results/samples/$name" --overwrite --ground-truth "$out/ground_truth.tum" >"results/samples/$name/process.log"
 	ate=$(grep -o '"ate_rmse_m": [0-9.]*' "results/samples/$name/evaluation.json" | awk '{print $2}')
 	echo "$name: $(du -sh "$out" | cut -f1), $(grep '^laser_scans=' "$out/summary.txt"), odometry-only ATE rmse = $ate m"
 done

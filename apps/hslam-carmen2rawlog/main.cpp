@@ -5,6 +5,7 @@
 #include <hslam/common/command_line.h>
 #include <hslam/common/options_io.h>
 #include <hslam/common/version.h>
+#include <hslam/common/output_paths.h>
 #include <hslam/io/carmen_import.h>
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
@@ -53,11 +54,22 @@ int main(int argc, char** argv)
 		// MRPT's TCLAP returns false (after printing) for --help/--version and for bad arguments.
 		if (!cmd.parse(argc, argv)) return hslam::common::exitCodeAfterParseStop(argc, argv);
 
+		using hslam::common::refuseOutputOverInput;
+		refuseOutputOverInput(output.getValue(), "output rawlog", {input.getValue()});
+		refuseOutputOverInput(reference.getValue(), "--reference", {input.getValue()});
+		hslam::common::refuseSameOutputs(output.getValue(), reference.getValue());
 		const auto options = optionsFrom(lenient.getValue(), clock.getValue(), period.getValue(), maxRange.getValue(),
 									  format.getValue());
 		const auto report =
 			hslam::io::convertCarmenLog(input.getValue(), output.getValue(), reference.getValue(), options);
 		std::cout << hslam::io::formatCarmenImportReport(report);
+		if (report.frontScans + report.rearScans + report.rawScans == 0)
+		{
+			// Exit code 3: ran, but the result is empty (issue 15 item 4).
+			std::cerr << "hslam-carmen2rawlog: warning: '" << hslam::common::printableName(input.getValue())
+					  << "' has no laser scan: the rawlog holds no scan and the reference trajectory is empty\n";
+			return 3;
+		}
 		return 0;
 	}
 	catch (const std::exception& e)

@@ -143,6 +143,9 @@ int main(int argc, char** argv)
 		TCLAP::ValueArg<double> duration("", "duration", "stop after this many seconds (0 = on SIGINT/SIGTERM) (default: 0)", false, 0, "s", cmd);
 		TCLAP::ValueArg<std::string> truth("", "truth", "write the true robot pose at 20 Hz to this TUM file at exit (default: none)", false, "", "file", cmd);
 		if (!cmd.parse(argc, argv)) return 0;
+		for (auto* a : {&dropEvery, &silenceEvery, &duration})
+			if (!(a->getValue() >= 0)) throw std::runtime_error("--" + a->getName() + ": expected a number of seconds >= 0");
+		if (!(silenceFor.getValue() > 0)) throw std::runtime_error("--silence-for: expected a number of seconds > 0");
 
 		std::shared_ptr<CEmulatorWorld> world;
 		std::shared_ptr<const hslam::sim::CWorld> simWorld;

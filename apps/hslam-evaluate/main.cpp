@@ -2,6 +2,7 @@
  * reference trajectory, both TUM files. Prints a table; --json also writes
  * the figures to a file. Exit code 0 on success, 1 on any error. */
 #include <hslam/common/command_line.h>
+#include <hslam/common/output_paths.h>
 #include <hslam/common/parse_number.h>
 #include <hslam/common/version.h>
 #include <hslam/eval/evaluate_trajectory.h>
@@ -57,6 +58,8 @@ int main(int argc, char** argv)
 		if (!cmd.parse(argc, argv)) return hslam::common::exitCodeAfterParseStop(argc, argv);
 
 		options.max_dt_s = parseMaxDt_s(maxDtArg.getValue());
+		if (jsonArg.isSet())
+			hslam::common::refuseOutputOverInput(jsonArg.getValue(), "--json", {referenceArg.getValue(), estimateArg.getValue()});
 		const auto errors = hslam::eval::evaluateTumFiles(referenceArg.getValue(), estimateArg.getValue(), options);
 		hslam::eval::printEvaluation(std::cout, errors);
 		if (jsonArg.isSet())

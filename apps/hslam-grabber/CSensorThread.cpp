@@ -50,6 +50,16 @@ void CSensorThread::stop()
 	if (m_thread.joinable()) m_thread.join();
 }
 
+bool CSensorThread::stopWithin(double timeout_s)
+{
+	m_quit = true;
+	const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+	while (!m_ended && std::chrono::steady_clock::now() < end) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+	if (!m_ended) return false;
+	if (m_thread.joinable()) m_thread.join();
+	return true;
+}
+
 std::string CSensorThread::error() const
 {
 	std::lock_guard<std::mutex> lk(m_mtx);
@@ -88,4 +98,5 @@ void CSensorThread::run()
 	mrpt::hwdrivers::CGenericSensor::TListObservations rest;
 	m_sensor->getObservations(rest);
 	if (!rest.empty()) m_sink(std::move(rest));
+	m_ended = true;
 }

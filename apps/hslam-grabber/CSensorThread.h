@@ -27,6 +27,11 @@ class CSensorThread
 	void start();
 	/** Requests the stop and joins. */
 	void stop();
+	/** Requests the stop and joins if the thread ends within timeout_s;
+	 * false if it is still blocked (a driver's initialize() retrying a missing
+	 * port can block for tens of seconds): the caller then must not destroy
+	 * this object and ends the process once the rawlog is closed. */
+	bool stopWithin(double timeout_s);
 
 	const std::string& section() const { return m_section; }
 	mrpt::hwdrivers::CGenericSensor& sensor() { return *m_sensor; }
@@ -41,7 +46,7 @@ class CSensorThread
 	mrpt::hwdrivers::CGenericSensor::Ptr m_sensor;
 	TSink m_sink;
 	std::thread m_thread;
-	std::atomic<bool> m_quit{false}, m_failed{false};
+	std::atomic<bool> m_quit{false}, m_failed{false}, m_ended{false};
 	mutable std::mutex m_mtx;
 	std::string m_error;
 };

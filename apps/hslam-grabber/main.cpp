@@ -32,8 +32,11 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
+#include <mutex>
 #include <thread>
 
 namespace
@@ -132,6 +135,8 @@ int main(int argc, char** argv)
 		// Sensor sections (as rawlog-grabber: all but [global] and ignored ones);
 		// the sensors only call the sink once started, after `writer` exists.
 		std::unique_ptr<CRecordingWriter> writer;
+		std::mutex sinkMtx;  // a sensor thread still blocked at the stop must not write after finish()
+		bool sinkOpen = true;
 		std::vector<std::string> sections;
 		cfg.getAllSections(sections);
 		std::vector<std::unique_ptr<CSensorThread>> threads;
@@ -139,7 +144,10 @@ int main(int argc, char** argv)
 		{
 			if (sec == "global" || cfg.read_bool(sec, "rawlog-grabber-ignore", false)) continue;
 			threads.push_back(std::make_unique<CSensorThread>(
-				cfg, sec, [&writer](mrpt::hwdrivers::CGenericSensor::TListObservations&& o) { writer->add(std::move(o)); }));
+				cfg, sec, [&writer, &sinkMtx, &sinkOpen](mrpt::hwdrivers::CGenericSensor::TListObservations&& o) {
+					std::lock_guard<std::mutex> lk(sinkMtx);
+					if (sinkOpen) writer->add(std::move(o));
+				}));
 		}
 		if (threads.empty()) throw std::runtime_error(ini.getValue() + ": no sensor sections");
 		// The output is created only once the configuration is known to be good.
@@ -194,11 +202,32 @@ int main(int argc, char** argv)
 			}
 		}
 		const double stopTime = mrpt::Clock::toDouble(mrpt::Clock::now());
-		for (auto& t : threads) t->stop();
+		// A stop acts within 1 s (issue 15 item 6): a thread still blocked in a
+		// driver (e.g. MRPT's LMS initialize() retrying a missing port) is left
+		// behind and the process ends by _Exit once the rawlog is closed.
+		std::vector<std::string> blocked;
+		for (auto& t : threads)
+			if (!t->stopWithin(1.0)) blocked.push_back(t->section());
+		{
+			std::lock_guard<std::mutex> lk(sinkMtx);
+			sinkOpen = false;
+		}
 		writer->finish();
 		const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 		const double cpu = cpuSeconds() - cpu0;
-		threads.clear();
+		// Link outages of the Pioneer (the summary names them, issue 15 item 6).
+		std::vector<std::string> outageLines;
+		for (auto& t : threads)
+			if (auto* p = dynamic_cast<hslam::hwdrivers::CPioneerSensor*>(&t->sensor()))
+			{
+				const auto st = p->driver().stats();
+				std::ostringstream os;
+				os << "  " << std::setw(12) << t->section() << ": link outages " << st.outages << ", total "
+				   << st.outageTotal_s << " s, longest " << st.longestOutage_s << " s"
+				   << (st.connected ? "" : "; link down at the stop: " + st.lastError) << "\n";
+				outageLines.push_back(os.str());
+			}
+		if (blocked.empty()) threads.clear();
 
 		std::cout << "hslam-grabber: wrote " << writer->objectsWritten() << " objects (" << writer->observationsWritten()
 				  << " observations) to " << outPath << " in " << std::fixed << std::setprecision(2) << wall << " s\n";
@@ -209,6 +238,7 @@ int main(int argc, char** argv)
 					  << (span > 0 ? (st.count - 1) / span : 0.0) << " Hz, non-increasing timestamps: " << st.nonIncreasing
 					  << "\n";
 		}
+		for (const auto& line : outageLines) std::cout << line;
 		if (pipeline)
 		{
 			const auto files = hslam::slam::writeMappingOutputs(*pipeline, mapOutOpts, mapOut.getValue());
@@ -219,12 +249,21 @@ int main(int argc, char** argv)
 				  << "\nwall_s=" << wall << "\ncpu_s=" << cpu << "\ncpu_percent=" << 100.0 * cpu / std::max(wall, 1e-9)
 				  << "\nobservations_per_s=" << writer->observationsWritten() / std::max(wall, 1e-9) << "\n"
 				  << std::setprecision(6) << "stop_time=" << stopTime << "\n";
+		int code = 0;
 		if (!failure.empty())
 		{
 			std::cerr << "hslam-grabber: stopped because a sensor failed: " << failure << "\n";
-			return 2;
+			code = 2;
 		}
-		return 0;
+		if (!blocked.empty())
+		{
+			for (const auto& sec : blocked)
+				std::cerr << "hslam-grabber: [" << sec << "] did not stop within 1 s (driver blocked); left behind\n";
+			std::cout.flush();
+			std::cerr.flush();
+			std::_Exit(code);  // the blocked threads still use their objects: no destructors
+		}
+		return code;
 	}
 	catch (const std::exception& e)
 	{

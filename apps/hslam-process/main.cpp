@@ -32,6 +32,7 @@ int main(int argc, char** argv)
 											 "reference trajectory (TUM) to evaluate the estimate against (default: none)", false,
 											 "", "ref.tum", cmd);
 	TCLAP::SwitchArg quiet("q", "quiet", "no progress bar (default: off)", cmd);
+	TCLAP::SwitchArg overwrite("", "overwrite", "write into a non-empty output folder that hslam did not create", cmd);
 	try
 	{
 		if (!cmd.parse(argc, argv)) return 0;  // --help or --version was printed
@@ -42,9 +43,19 @@ int main(int argc, char** argv)
 		request.output_dir = output.getValue();
 		request.ground_truth_tum = groundTruth.getValue();
 		request.show_progress = !quiet.getValue();
+		request.overwrite = overwrite.getValue();
 		hslam::slam::CBatchProcessor processor(request, std::cout, std::cerr);
 		const auto result = processor.run();
-		return result.input_error.empty() ? 0 : 2;
+		if (!result.input_error.empty()) return 2;
+		if (result.counters.laser_scans == 0)
+		{
+			// Exit code 3: ran, but the result is empty (issue 15 item 4).
+			std::cerr << "hslam-process: warning: no laser scan was used (" << result.counters.entries << " entries read, "
+					  << result.counters.laser_scans_ignored
+					  << " scans ignored by [process] laser_label): the map and the trajectory are empty\n";
+			return 3;
+		}
+		return 0;
 	}
 	catch (const TCLAP::ArgException& e)
 	{

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 #include <hslam/io/carmen_clock.h>
 
+#include <limits>
+
 using namespace hslam::io;
 
 namespace
@@ -78,4 +80,28 @@ TEST(CarmenClockRepair, FewSmallBackwardStepsAreRepairedNotRejected)
 	std::vector<double> allEqual(200, 1.13486e9);  // csail: too few digits printed
 	EXPECT_EQ(hslam::io::repairSmallBackwardSteps(allEqual), 0u);
 	EXPECT_TRUE(hslam::io::carmenClockProblem(allEqual).has_value());
+}
+
+TEST(CarmenClockRepair, OneBadStampIsRepairedLocallyNotTheWholeClock)
+{
+	// Issue 15 item 2: one negative or infinite stamp used to switch the whole
+	// log to the synthetic clock. Now it is interpolated and warned about.
+	for (double bad : {-1.0, std::numeric_limits<double>::infinity(), 1e308, 0.0})
+	{
+		std::vector<hslam::io::TCarmenStamp> stamps(300);
+		for (size_t k = 0; k < stamps.size(); ++k) stamps[k].ipc_s = stamps[k].logger_s = 1000.0 + 0.2 * k;
+		stamps[120].ipc_s = bad;
+		stamps[0].ipc_s = bad;  // also at the start
+		const auto clock = hslam::io::selectCarmenClock(stamps, "auto", 1.0);
+		EXPECT_EQ(clock.name, "ipc") << clock.reason;
+		EXPECT_EQ(clock.repairedStamps, 2u);
+		EXPECT_NEAR(clock.t_s[120], 1000.0 + 0.2 * 120, 1e-9);
+		EXPECT_NEAR(clock.t_s[0], 1000.0, 1e-9);
+		EXPECT_NE(clock.reason.find("isolated bad stamp"), std::string::npos) << clock.reason;
+	}
+	// Many bad stamps: not repaired, the clock is rejected as before.
+	std::vector<hslam::io::TCarmenStamp> many(300);
+	for (size_t k = 0; k < many.size(); ++k) many[k].ipc_s = many[k].logger_s = 1000.0 + 0.2 * k;
+	for (size_t k = 10; k < 300; k += 20) many[k].ipc_s = many[k].logger_s = -1;
+	EXPECT_EQ(hslam::io::selectCarmenClock(many, "auto", 1.0).name, "synthetic");
 }

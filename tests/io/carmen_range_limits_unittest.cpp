@@ -43,3 +43,24 @@ TEST(CarmenRangeLimits, UserMaximumOverrides)
 	EXPECT_EQ(scanMaximum({1.0, 5.0, 2.0}), 5.0);
 	EXPECT_FALSE(scanMaximum({}).has_value());
 }
+
+TEST(CarmenRangeLimits, OneOutlierBeamDoesNotHideTheMarker)
+{
+	// Issue 15 item 2: one beam of 1e308 (or 82.5 m in intel, marker 81.91)
+	// used to become the "global maximum", seen in one scan only, so no marker
+	// was found and every no-return beam became an 80 m wall.
+	for (double outlier : {1e308, 82.5})
+	{
+		std::vector<double> maxima(1000, 30.0);
+		for (int i = 0; i < 200; ++i) maxima[i * 5] = 81.91;
+		maxima[7] = outlier;
+		const auto limits = deriveCarmenRangeLimits(maxima, std::nullopt, 0.0);
+		ASSERT_TRUE(limits.noReturn_m.has_value()) << limits.reason;
+		EXPECT_DOUBLE_EQ(*limits.noReturn_m, 81.91);
+		EXPECT_DOUBLE_EQ(limits.maxRange_m, 81.91);
+		EXPECT_EQ(limits.outlierScans, 1u);
+		EXPECT_DOUBLE_EQ(limits.largestOutlier_m, outlier);
+		EXPECT_FALSE(limits.isValid(outlier));  // the outlier beam itself is dropped
+		EXPECT_NE(limits.reason.find("1 scans with larger (outlier) ranges"), std::string::npos) << limits.reason;
+	}
+}

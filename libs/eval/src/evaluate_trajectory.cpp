@@ -21,7 +21,7 @@ std::string describeTrajectory(const std::string& label, size_t numPoses, const 
 [[noreturn]] void throwTooFewMatches(const TTrajectoryErrors& e)
 {
 	char head[160];
-	std::snprintf(head, sizeof(head), "only %zu pose(s) matched within %g s (at least 2 needed): reference ",
+	std::snprintf(head, sizeof(head), "only %zu pose(s) matched within %g s (at least 3 needed: 2 poses always align exactly): reference ",
 				  e.matched, e.max_dt_s);
 	throw std::runtime_error(
 		head + describeTrajectory(e.reference_label, e.reference_poses, e.reference_time) + ", estimate " +
@@ -41,6 +41,21 @@ std::vector<TRpeResult> computeAllRpe(const TAssociation& matches, const std::ve
 					   computeRelativePoseError(matches.reference, matches.estimate, pairs)});
 	}
 	return out;
+}
+
+/** Coordinates beyond 1e9 m (or not finite) would overflow the squared
+ * errors into inf: refused, naming the file and the pose (issue 15 item 6). */
+void checkCoordinates(const common::TTrajectory2D& poses, const std::string& label)
+{
+	constexpr double LIMIT_M = 1e9;
+	for (size_t i = 0; i < poses.size(); ++i)
+	{
+		const auto& p = poses[i];
+		if (!std::isfinite(p.t_s) || !std::isfinite(p.pose.phi) || !(std::abs(p.pose.x) <= LIMIT_M) ||
+			!(std::abs(p.pose.y) <= LIMIT_M))
+			throw std::runtime_error("'" + label + "': pose " + std::to_string(i + 1) +
+									 ": coordinates must be finite and within 1e9 m");
+	}
 }
 
 /** Rejects bad options before any work, whatever the data. */
@@ -72,6 +87,8 @@ TTrajectoryErrors evaluateTrajectory(const common::TTrajectory2D& reference,
 	e.max_dt_s = options.max_dt_s;
 	e.reference_poses = reference.size();
 	e.estimate_poses = estimate.size();
+	checkCoordinates(reference, options.reference_label);
+	checkCoordinates(estimate, options.estimate_label);
 	e.reference_time = timeRange(reference);
 	e.estimate_time = timeRange(estimate);
 
@@ -79,7 +96,7 @@ TTrajectoryErrors evaluateTrajectory(const common::TTrajectory2D& reference,
 	e.matched = matches.size();
 	e.unmatched_reference = matches.unmatched_reference;
 	e.unmatched_estimate = matches.unmatched_estimate;
-	if (e.matched < 2) throwTooFewMatches(e);
+	if (e.matched < 3) throwTooFewMatches(e);
 
 	e.ate = computeAbsoluteTrajectoryError(matches.reference, matches.estimate);
 	e.rpe = computeAllRpe(matches, options.rpe_distances_m);

@@ -31,6 +31,13 @@ CArcosEmulator::CArcosEmulator(const TOptions& options, std::shared_ptr<const CE
 							   std::shared_ptr<CEmulatorKinematics> kinematics)
 	: m_opts(options), m_world(std::move(world)), m_kin(std::move(kinematics)), m_rng(options.seed)
 {
+	// A zero or negative period would stream SIPs with non-increasing stamps
+	// as fast as the link takes them (issue 15 item 6); ARCOS allows 0.01-2 s
+	// in practice (its own watchdog is 2 s).
+	if (!(options.sip_period_s >= 0.01 && options.sip_period_s < 2.0))
+		throw std::invalid_argument("SIP period " + std::to_string(options.sip_period_s) + " s: expected 0.01 <= period < 2 s");
+	for (double rate : {options.bad_checksum_rate, options.partial_rate, options.garbage_rate})
+		if (!(rate >= 0 && rate <= 1)) throw std::invalid_argument("fault rate " + std::to_string(rate) + ": expected 0..1");
 	if (!m_kin) m_kin = std::make_shared<CExactKinematics>(options.start_pose);
 	m_odomOrigin = m_kin->odometryPose();
 	m_sonarPoses = parseSonarPoses(m_opts.sonar_poses);

@@ -1,6 +1,8 @@
 /* hslam: SICK LMS200 emulator (see CLms200Emulator.h). */
 #include <hslam/hwdrivers/CLms200Emulator.h>
 
+#include <stdexcept>
+
 #include <poll.h>
 #include <unistd.h>
 
@@ -39,6 +41,8 @@ CLms200Emulator::CLms200Emulator(const TOptions& options, std::shared_ptr<const 
 								 TPoseSource robotPose)
 	: m_opts(options), m_world(std::move(world)), m_pose(std::move(robotPose)), m_config(33, 0)
 {
+	if (!(options.scan_rate_hz > 0 && options.scan_rate_hz <= 100))
+		throw std::invalid_argument("LMS200 scan rate " + std::to_string(options.scan_rate_hz) + " Hz: expected 0 < rate <= 100");
 }
 
 CLms200Emulator::~CLms200Emulator() { stop(); }

@@ -118,6 +118,14 @@ bool CPioneerDriver::connect()
 		m_sentV = m_sentW = 1e9;
 		m_lastSip = Clock::now();
 		std::lock_guard<std::mutex> lk(m_mtx);
+		m_stats.lastHeard = m_lastSip;
+		if (m_stats.connections > 0 && m_stats.lastLinkLoss != mrpt::Clock::time_point{})
+		{
+			const double outage_s = secondsSince(m_stats.lastLinkLoss, m_lastSip);
+			++m_stats.outages;
+			m_stats.outageTotal_s += outage_s;
+			m_stats.longestOutage_s = std::max(m_stats.longestOutage_s, outage_s);
+		}
 		m_stats.connected = true;
 		++m_stats.connections;
 		return true;
@@ -158,6 +166,7 @@ void CPioneerDriver::closeLink(const std::string& why, bool silence)
 	m_parser.clear();
 	std::lock_guard<std::mutex> lk(m_mtx);
 	m_stats.connected = false;
+	m_stats.lastLinkLoss = Clock::now();
 	m_stats.lastError = why;
 	++(silence ? m_stats.silenceTimeouts : m_stats.linkErrors);
 }
@@ -236,6 +245,7 @@ void CPioneerDriver::readAvailable(double timeout_s, std::vector<TPioneerState>&
 			out.push_back(std::move(st));
 			m_lastSip = out.back().timestamp;
 			std::lock_guard<std::mutex> lk(m_mtx);
+			m_stats.lastHeard = m_lastSip;
 			++m_stats.sips;
 		}
 	}

@@ -9,7 +9,7 @@ namespace hslam::io
 {
 namespace
 {
-constexpr int kChunkBytes = 64 * 1024;  // one gzgets call; longer lines take several calls
+constexpr int kChunkBytes = 64 * 1024;  // one gzread call
 
 gzFile asGz(void* f) { return static_cast<gzFile>(f); }
 }  // namespace
@@ -29,20 +29,34 @@ CGzLineReader::~CGzLineReader()
 bool CGzLineReader::nextLine(std::string& line)
 {
 	line.clear();
-	char chunk[kChunkBytes];
-	bool readSomething = false;
-	while (gzgets(asGz(m_file), chunk, kChunkBytes) != nullptr)
+	for (;;)
 	{
-		readSomething = true;
-		line += chunk;
-		if (!line.empty() && line.back() == '\n') break;
+		const size_t eol = m_pending.find('\n', m_pendingPos);
+		if (eol != std::string::npos)
+		{
+			line.append(m_pending, m_pendingPos, eol - m_pendingPos);
+			m_pendingPos = eol + 1;
+			break;
+		}
+		line.append(m_pending, m_pendingPos, std::string::npos);
+		m_pending.clear();
+		m_pendingPos = 0;
+		if (!m_ended)
+		{
+			m_pending.resize(kChunkBytes);
+			const int n = gzread(asGz(m_file), m_pending.data(), kChunkBytes);
+			m_pending.resize(n > 0 ? static_cast<size_t>(n) : 0);
+			if (n <= 0)
+			{
+				m_ended = true;
+				throwIfStreamError();
+			}
+			continue;
+		}
+		if (line.empty()) return false;  // clean end of file
+		break;  // last line without a newline
 	}
-	if (!readSomething)
-	{
-		throwIfStreamError();
-		return false;
-	}
-	while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
+	while (!line.empty() && line.back() == '\r') line.pop_back();
 	++m_lineNumber;
 	return true;
 }

@@ -61,25 +61,76 @@ std::string repairNote(size_t repaired)
 					: "";
 }
 
+std::string isolatedNote(size_t repaired)
+{
+	return repaired ? " after replacing " + std::to_string(repaired) +
+						  " isolated bad stamp(s) (not finite, <= 0 or out of order) by the midpoint of their neighbours"
+					: "";
+}
+
+TCarmenClock withRepairs(TCarmenClock clock, size_t isolated)
+{
+	clock.repairedStamps = isolated;
+	return clock;
+}
+
 TCarmenClock automatic(const std::vector<TCarmenStamp>& stamps, double period_s)
 {
 	auto ipc = ipcTimes(stamps);
+	const size_t ipcIsolated = repairIsolatedBadStamps(ipc);
 	const size_t ipcRepaired = repairSmallBackwardSteps(ipc);
 	const auto ipcProblem = carmenClockProblem(ipc);
 	if (!ipcProblem)
-		return useTimes("ipc", std::move(ipc), describeOk("ipc_timestamp", stamps.size()) + repairNote(ipcRepaired));
+		return withRepairs(useTimes("ipc", std::move(ipc),
+									describeOk("ipc_timestamp", stamps.size()) + isolatedNote(ipcIsolated) + repairNote(ipcRepaired)),
+						   ipcIsolated);
 	auto logger = loggerTimes(stamps);
+	const size_t loggerIsolated = repairIsolatedBadStamps(logger);
 	const size_t loggerRepaired = repairSmallBackwardSteps(logger);
 	const auto loggerProblem = carmenClockProblem(logger);
 	const std::string ipcRejected = "ipc_timestamp rejected: " + *ipcProblem;
 	if (!loggerProblem)
-		return useTimes("logger", std::move(logger),
-						ipcRejected + "; " + describeOk("logger_timestamp", stamps.size()) + repairNote(loggerRepaired));
+		return withRepairs(useTimes("logger", std::move(logger),
+									ipcRejected + "; " + describeOk("logger_timestamp", stamps.size()) +
+										isolatedNote(loggerIsolated) + repairNote(loggerRepaired)),
+						   loggerIsolated);
 	return useTimes("synthetic", syntheticTimes(stamps.size(), period_s),
 					ipcRejected + "; logger_timestamp rejected: " + *loggerProblem + "; using t_k = k * " +
 						formatNumber(period_s) + " s from 0");
 }
 }  // namespace
+
+size_t repairIsolatedBadStamps(std::vector<double>& t_s)
+{
+	const size_t n = t_s.size();
+	if (n < 3) return 0;
+	const auto good = [](double t) { return std::isfinite(t) && t > 0; };
+	std::vector<double> steps;
+	for (size_t k = 1; k < n; ++k)
+		if (good(t_s[k]) && good(t_s[k - 1]) && t_s[k] > t_s[k - 1]) steps.push_back(t_s[k] - t_s[k - 1]);
+	if (steps.empty()) return 0;
+	std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
+	const double medianStep_s = steps[steps.size() / 2];
+	std::vector<std::pair<size_t, double>> fixes;
+	for (size_t k = 0; k < n; ++k)
+	{
+		const bool hasPrev = k > 0 && good(t_s[k - 1]), hasNext = k + 1 < n && good(t_s[k + 1]);
+		if (k > 0 && k + 1 < n)
+		{
+			if (!hasPrev || !hasNext || !(t_s[k + 1] > t_s[k - 1])) continue;  // not isolated
+			if (good(t_s[k]) && t_s[k] > t_s[k - 1] && t_s[k] < t_s[k + 1]) continue;  // fine
+			fixes.emplace_back(k, 0.5 * (t_s[k - 1] + t_s[k + 1]));
+		}
+		else if (!good(t_s[k]) || (k == 0 && hasNext && !(t_s[0] < t_s[1])) || (k + 1 == n && hasPrev && !(t_s[k] > t_s[k - 1])))
+		{
+			if (k == 0 && hasNext) fixes.emplace_back(k, t_s[1] - medianStep_s);
+			if (k + 1 == n && hasPrev) fixes.emplace_back(k, t_s[k - 1] + medianStep_s);
+		}
+	}
+	if (fixes.empty() || fixes.size() > std::max<size_t>(1, n / 100)) return 0;
+	for (const auto& [k, t] : fixes) t_s[k] = t;
+	return fixes.size();
+}
 
 size_t repairSmallBackwardSteps(std::vector<double>& t_s)
 {

@@ -159,12 +159,20 @@ TCarmenImportReport convertCarmenLog(const std::string& inputLog, const std::str
 	const TCarmenClock clock = selectCarmenClock(stats.stamps, options.clock, options.synthetic_period_s);
 	report.clockUsed = clock.name;
 	report.clockReason = clock.reason;
+	if (clock.repairedStamps > 0)
+		report.warnings.push_back(std::to_string(clock.repairedStamps) + " isolated bad scan timestamp(s) of the " + clock.name +
+								  " clock repaired by interpolation (see clock:)");
 
 	const auto laserMax_m = paramLaserMax(log, report.warnings);
 	const TCarmenRangeLimits limits = deriveCarmenRangeLimits(stats.maxima_m, laserMax_m, options.max_range_m);
 	report.maxRange_m = limits.maxRange_m;
 	report.noReturn_m = limits.noReturn_m;
 	report.rangeLimitsReason = limits.reason;
+	report.rangeOutlierScans = limits.outlierScans;
+	if (limits.outlierScans > 0)
+		report.warnings.push_back(std::to_string(limits.outlierScans) + " scan(s) have ranges above the no-return value " +
+								  formatNumber(limits.maxRange_m) + " m (largest " + formatNumber(limits.largestOutlier_m) +
+								  " m): those beams are marked invalid");
 
 	const TCarmenLaserMounts mounts = carmenLaserMounts(log.params, log.path);
 	noteLaserOffsets(mounts, report.warnings);

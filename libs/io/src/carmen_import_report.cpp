@@ -34,7 +34,8 @@ std::string formatCarmenImportReport(const TCarmenImportReport& r)
 	   << "clock: " << r.clockUsed << " (" << r.clockReason << ")\n"
 	   << "invalid ranges: "
 	   << (r.noReturn_m ? ">= " + detail::formatNumber(*r.noReturn_m) + " m and <= 0" : std::string("<= 0 only"))
-	   << "; maxRange " << detail::formatNumber(r.maxRange_m) << " m (" << r.rangeLimitsReason << ")\n";
+	   << "; maxRange " << detail::formatNumber(r.maxRange_m) << " m (" << r.rangeLimitsReason << ")\n"
+	   << "scans with outlier ranges above the no-return value: " << r.rangeOutlierScans << "\n";
 	os << "warnings: " << r.warnings.size() << "\n";
 	for (const auto& warning : r.warnings) os << "  " << warning << "\n";
 	return os.str();

@@ -1,6 +1,8 @@
 /* hslam: building MRPT observations from CARMEN messages. */
 #include <hslam/io/carmen_observations.h>
 
+#include <algorithm>
+
 #include <mrpt/core/Clock.h>
 
 namespace hslam::io
@@ -34,8 +36,12 @@ mrpt::obs::CObservation2DRangeScan::Ptr makeCarmenScan(const TCarmenLaser& laser
 	scan->resizeScan(laser.ranges_m.size());
 	for (size_t i = 0; i < laser.ranges_m.size(); ++i)
 	{
-		scan->setScanRange(i, static_cast<float>(laser.ranges_m[i]));
-		scan->setScanRangeValidity(i, limits.isValid(laser.ranges_m[i]));
+		// An invalid beam's value is clamped into float range (a 1e308 outlier
+		// would overflow the float conversion).
+		const double r_m = laser.ranges_m[i];
+		const bool valid = limits.isValid(r_m);
+		scan->setScanRange(i, static_cast<float>(valid ? r_m : std::clamp(r_m, 0.0, std::max(limits.maxRange_m, 0.0))));
+		scan->setScanRangeValidity(i, valid);
 	}
 	return scan;
 }

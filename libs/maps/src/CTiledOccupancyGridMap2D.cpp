@@ -239,8 +239,13 @@ void CTiledOccupancyGridMap2D::serializeTo(mrpt::serialization::CArchive& out) c
 void CTiledOccupancyGridMap2D::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version)
 {
 	if (version != 0) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
-	std::string ini;
-	in >> genericMapParams >> ini;
+	in >> genericMapParams;
+	// The INI text's length is checked before allocating (a corrupt length
+	// would make MRPT's string reader allocate up to 4 GB; issue 15).
+	const auto iniChars = in.ReadAs<uint32_t>();
+	if (iniChars > (1u << 20)) THROW_EXCEPTION_FMT("CTiledOccupancyGridMap2D: options text of %u bytes (> 1 MiB)", iniChars);
+	std::string ini(iniChars, '\0');
+	in.ReadBuffer(ini.data(), iniChars);
 	mrpt::config::CConfigFileMemory cfg(ini);
 	CTiledOccupancyGrid::TOptions gridOpts;
 	loadTiledMapOptions(gridOpts, insertionOptions, likelihoodOptions, cfg, kCreation, kInsert, kLikelihood);

@@ -1,5 +1,6 @@
 #include <hslam/common/CProgressBar.h>
 #include <hslam/common/options_io.h>
+#include <hslam/common/output_folder.h>
 #include <hslam/eval/evaluate_trajectory.h>
 #include <hslam/eval/evaluation_json.h>
 #include <hslam/eval/evaluation_table.h>
@@ -33,7 +34,7 @@ TBatchResult CBatchProcessor::run()
 	if (outputOptions.write_sensor_maps) pipeline.keepSensorMaps();
 	if (outputOptions.dynamic_debug_images)
 		pipeline.keepDynamicDebugFrames(static_cast<size_t>(outputOptions.dynamic_debug_max_images));
-	std::filesystem::create_directories(m_request.output_dir);
+	common::COutputFolder folder(m_request.output_dir, m_request.overwrite);  // lock, refuse foreign, clean stale
 	addDebugFrameWriter(pipeline, outputOptions.debug_frames_every);
 
 	TBatchResult result;
@@ -46,6 +47,7 @@ TBatchResult CBatchProcessor::run()
 	const std::chrono::duration<double> wall_s = std::chrono::steady_clock::now() - started;
 	for (auto& f : writeRunReport(pipeline, m_request, result, wall_s.count())) result.files_written.push_back(f);
 	m_out << "\nReport: " << m_request.output_dir << "/report.html (figures: summary.json)\n";
+	folder.finish();
 	return result;
 }
 
@@ -71,6 +73,9 @@ void CBatchProcessor::readRawlog(CMappingPipeline& pipeline, TBatchResult& resul
 	{
 		result.input_error = e.what();
 	}
+	// Corrupt parts skipped by resynchronisation: reported like a fault.
+	if (!reader.problems().empty())
+		result.input_error = reader.problemSummary() + (result.input_error.empty() ? "" : "\n" + result.input_error);
 	if (m_request.show_progress) progress.finish();
 }
 

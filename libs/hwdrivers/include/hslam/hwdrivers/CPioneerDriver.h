@@ -56,6 +56,13 @@ struct TPioneerDriverStats
 	uint64_t malformedSips = 0;
 	arcos::CArcosPacketParser::TStats parser;
 	std::string lastError;
+	/** The driver's own clock of the link: when it last heard the robot (last
+	 * SIP, or the handshake) and when it last closed the link (silence or
+	 * link error). Tests compare these instead of their own wall clock. */
+	mrpt::Clock::time_point lastHeard{}, lastLinkLoss{};
+	/** Link outages ended by a reconnection: count, total and longest (s). */
+	uint64_t outages = 0;
+	double outageTotal_s = 0, longestOutage_s = 0;
 	std::string robotName, robotClass, robotSubclass;
 };
 

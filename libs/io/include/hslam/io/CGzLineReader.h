@@ -33,6 +33,12 @@ class CGzLineReader
 	std::string m_path;
 	void* m_file = nullptr;  //!< gzFile (kept opaque so zlib.h stays out of the header)
 	size_t m_lineNumber = 0;
+	/** Decompressed bytes not yet returned: lines are split here, not by
+	 * gzgets(), so a NUL byte stays inside its line (gzgets' C string would
+	 * end at it and glue the next line on, issue 15 item 6). */
+	std::string m_pending;
+	size_t m_pendingPos = 0;
+	bool m_ended = false;
 };
 
 }  // namespace hslam::io

@@ -27,6 +27,7 @@ struct TCarmenClock
 	std::string name;  //!< "ipc", "logger" or "synthetic"
 	std::string reason;  //!< why this clock was used (and why others were not)
 	std::vector<double> t_s;  //!< one timestamp per scan, in file order
+	size_t repairedStamps = 0;  //!< isolated bad stamps replaced by interpolation (warned about)
 };
 
 /** Largest backward step (s) that an otherwise usable timestamp stream may
@@ -40,6 +41,14 @@ constexpr double kMaxRepairableBackStep_s = 1.0;
  * goes back more than kMaxRepairableBackStep_s; returns how many were changed
  * (0 and no change otherwise: the stream is then judged as it is). */
 size_t repairSmallBackwardSteps(std::vector<double>& t_s);
+
+/** Repairs isolated bad stamps in place (issue 15 item 2): a stamp that is
+ * not finite, <= 0, or out of order between two neighbours that are in order
+ * (a single 1e308 or -1 among good stamps) is replaced by the midpoint of its
+ * neighbours (at either end: the neighbour -/+ the median step). At most
+ * max(1, 1 %) of the stamps, else nothing changes (the clock is then judged
+ * and rejected as a whole); returns how many were changed. */
+size_t repairIsolatedBadStamps(std::vector<double>& t_s);
 
 /** nullopt if `t_s` passes the test above, else a short explanation. */
 std::optional<std::string> carmenClockProblem(const std::vector<double>& t_s);

@@ -77,6 +77,7 @@ struct TCarmenImportReport
 	double maxRange_m = 0;
 	std::optional<double> noReturn_m;  //!< invalid-range threshold, if any
 	std::string rangeLimitsReason;
+	size_t rangeOutlierScans = 0;  //!< scans with beams above the no-return value (those beams invalid)
 	std::vector<std::string> warnings;
 };
 

@@ -24,6 +24,7 @@ struct TBatchRequest
 	std::string output_dir;
 	std::string ground_truth_tum;  //!< optional reference trajectory
 	bool show_progress = true;
+	bool overwrite = false;  //!< write into a non-empty folder not made by hslam (common::COutputFolder)
 };
 
 struct TBatchResult

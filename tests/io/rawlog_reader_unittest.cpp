@@ -1,0 +1,260 @@
+/* CRawlogReader against crafted and damaged rawlogs (issue 15, items 1 and
+ * 6): absurd declared sizes are refused before MRPT allocates, a damaged
+ * object is skipped by resynchronising on the next object header (the bytes
+ * skipped are exactly the damaged object), and a cut file still ends with a
+ * "truncated" error after everything before the cut. The rawlogs are written
+ * here by MRPT's own serialisation, in both formats, plain and gz. */
+#include <gtest/gtest.h>
+#include <hslam/io/CRawlogReader.h>
+#include <hslam/io/rawlog_declared_sizes.h>
+#include <hslam/testing/temp_dir.h>
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservationComment.h>
+#include <mrpt/obs/CObservationRange.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/serialization/archiveFrom_std_vector.h>
+#include <sys/resource.h>
+
+#include <cstring>
+#include <fstream>
+
+using namespace hslam::io;
+
+namespace
+{
+using TBytes = std::vector<uint8_t>;
+
+TBytes serialize(const mrpt::serialization::CSerializable& o)
+{
+	TBytes v;
+	auto a = mrpt::serialization::archiveFrom(v);
+	a.WriteObject(&o);
+	return v;
+}
+
+mrpt::obs::CObservation2DRangeScan::Ptr makeScan(int k)
+{
+	auto s = std::make_shared<mrpt::obs::CObservation2DRangeScan>();
+	s->sensorLabel = "LASER";
+	s->aperture = static_cast<float>(M_PI);
+	s->maxRange = 8.0f;
+	s->resizeScan(181);
+	for (size_t i = 0; i < 181; ++i)
+	{
+		s->setScanRange(i, 1.0f + 0.01f * static_cast<float>(k));
+		s->setScanRangeValidity(i, true);
+	}
+	s->timestamp = mrpt::Clock::fromDouble(1000.0 + k);
+	return s;
+}
+
+/** The serialised objects of an observations-only rawlog of n scans. */
+std::vector<TBytes> scanObjects(int n)
+{
+	std::vector<TBytes> objs;
+	for (int k = 0; k < n; ++k) objs.push_back(serialize(*makeScan(k)));
+	return objs;
+}
+
+void writeFile(const std::string& path, const std::vector<TBytes>& objs, bool gz)
+{
+	TBytes all;
+	for (const auto& o : objs) all.insert(all.end(), o.begin(), o.end());
+	if (gz)
+	{
+		mrpt::io::CFileGZOutputStream f(path);
+		f.Write(all.data(), all.size());
+	}
+	else
+		std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(all.data()), static_cast<std::streamsize>(all.size()));
+}
+
+void putU32(TBytes& b, size_t at, uint32_t v) { std::memcpy(b.data() + at, &v, 4); }
+
+/** Offset of the beam count in a serialised MRPT 2.5 scan (v7), found in the
+ * bytes themselves: the first u32 equal to the scan size after the pose. */
+size_t beamCountOffset(const TBytes& scan)
+{
+	for (size_t i = 40; i + 4 <= scan.size(); ++i)
+	{
+		uint32_t v;
+		std::memcpy(&v, scan.data() + i, 4);
+		if (v == 181u) return i;
+	}
+	return 0;
+}
+
+struct TReadResult
+{
+	std::vector<double> stamps;  //!< of the scans read
+	std::vector<TRawlogProblem> problems;
+	std::string error;
+};
+
+TReadResult readAll(const std::string& path)
+{
+	TReadResult r;
+	CRawlogReader reader(path);
+	TRawlogEntry e;
+	try
+	{
+		while (reader.next(e))
+		{
+			if (e.observation) r.stamps.push_back(mrpt::Clock::toDouble(e.observation->timestamp));
+			if (e.frame)
+				for (const auto& o : *e.frame) r.stamps.push_back(mrpt::Clock::toDouble(o->timestamp));
+		}
+	}
+	catch (const rawlog_error& ex)
+	{
+		r.error = ex.what();
+	}
+	r.problems = reader.problems();
+	return r;
+}
+
+long peakRss_kB()
+{
+	rusage u{};
+	getrusage(RUSAGE_SELF, &u);
+	return u.ru_maxrss;
+}
+}  // namespace
+
+TEST(RawlogReader, TheScanLayoutIsTheOneTheChecksKnow)
+{
+	const TBytes scan = serialize(*makeScan(0));
+	EXPECT_EQ(beamCountOffset(scan), 164u);  // header 35, version, 9 bytes, CPose3D 119
+	const auto ok = checkDeclaredSizes(scan.data(), scan.size(), true);
+	EXPECT_EQ(ok.result, TDeclaredSizeCheck::EResult::Plausible);
+	TBytes bad = scan;
+	putU32(bad, 164, 0x7fffffffu);
+	const auto r = checkDeclaredSizes(bad.data(), bad.size(), false);
+	EXPECT_EQ(r.result, TDeclaredSizeCheck::EResult::Absurd);
+	EXPECT_NE(r.message.find("beam count 2147483647"), std::string::npos) << r.message;
+}
+
+TEST(RawlogReader, AbsurdBeamCountsAreRefusedBeforeMrptAllocates)
+{
+	for (bool gz : {false, true})
+	{
+		hslam::testing::CTempDir tmp;
+		auto objs = scanObjects(10);
+		putU32(objs[3], beamCountOffset(objs[3]), 0x7fffffffu);  // 2^31 beams: 19 GB in MRPT
+		putU32(objs[6], beamCountOffset(objs[6]), 0xffffffffu);
+		writeFile(tmp.file("crafted.rawlog"), objs, gz);
+		const long rssBefore_kB = peakRss_kB();
+		const auto r = readAll(tmp.file("crafted.rawlog"));
+		EXPECT_EQ(r.error, "");
+		// The 8 good scans, in order; the two crafted ones refused and reported.
+		ASSERT_EQ(r.stamps.size(), 8u);
+		EXPECT_EQ(r.stamps, (std::vector<double>{1000, 1001, 1002, 1004, 1005, 1007, 1008, 1009}));
+		ASSERT_EQ(r.problems.size(), 2u);
+		EXPECT_EQ(r.problems[0].entry, 3u);
+		EXPECT_NE(r.problems[0].message.find("crafted.rawlog: entry 3"), std::string::npos) << r.problems[0].message;
+		EXPECT_NE(r.problems[0].message.find("beam count 2147483647"), std::string::npos) << r.problems[0].message;
+		EXPECT_NE(r.problems[1].message.find("beam count 4294967295"), std::string::npos) << r.problems[1].message;
+		// Exactly the crafted objects were skipped.
+		EXPECT_EQ(r.problems[0].skipped_bytes, objs[3].size());
+		EXPECT_EQ(r.problems[1].skipped_bytes, objs[6].size());
+		// Nothing near the 8-16 GB MRPT would have asked for.
+		EXPECT_LT(peakRss_kB() - rssBefore_kB, 200 * 1024);
+	}
+}
+
+TEST(RawlogReader, AbsurdSizesInsideASensoryFrameAreRefused)
+{
+	hslam::testing::CTempDir tmp;
+	std::vector<TBytes> objs;
+	for (int k = 0; k < 6; ++k)
+	{
+		mrpt::obs::CActionCollection acts;
+		mrpt::obs::CActionRobotMovement2D move;
+		acts.insert(move);
+		mrpt::obs::CSensoryFrame sf;
+		sf.insert(makeScan(k));
+		objs.push_back(serialize(acts));
+		TBytes frame = serialize(sf);
+		if (k == 2)  // the nested scan's beam count (the scan starts after SF header 25 + version + N)
+			putU32(frame, 30 + beamCountOffset(serialize(*makeScan(k))), 0x7fffffffu);
+		objs.push_back(frame);
+	}
+	writeFile(tmp.file("sf.rawlog.gz"), objs, true);
+	const auto r = readAll(tmp.file("sf.rawlog.gz"));
+	EXPECT_EQ(r.error, "");
+	EXPECT_EQ(r.stamps, (std::vector<double>{1000, 1001, 1003, 1004, 1005}));
+	ASSERT_EQ(r.problems.size(), 1u);
+	EXPECT_NE(r.problems[0].message.find("beam count 2147483647"), std::string::npos) << r.problems[0].message;
+}
+
+TEST(RawlogReader, AbsurdLabelAndCommentLengthsAreRefused)
+{
+	hslam::testing::CTempDir tmp;
+	auto objs = scanObjects(4);
+	const size_t labelAt = beamCountOffset(objs[1]) + 4 + 5 * 181 + 4 + 8 + 4;
+	ASSERT_EQ(objs[1][labelAt], 5u);  // "LASER"
+	putU32(objs[1], labelAt, 0xfffffff0u);
+	mrpt::obs::CObservationComment c;
+	c.text = "a comment";
+	TBytes comment = serialize(c);
+	putU32(comment, 1 + 30 + 1, 0x7ffffff0u);
+	objs.insert(objs.begin() + 3, comment);
+	writeFile(tmp.file("labels.rawlog"), objs, false);
+	const auto r = readAll(tmp.file("labels.rawlog"));
+	EXPECT_EQ(r.stamps, (std::vector<double>{1000, 1002, 1003}));
+	ASSERT_EQ(r.problems.size(), 2u);
+	EXPECT_NE(r.problems[0].message.find("sensor label length"), std::string::npos) << r.problems[0].message;
+	EXPECT_NE(r.problems[1].message.find("comment length"), std::string::npos) << r.problems[1].message;
+}
+
+TEST(RawlogReader, ABitFlipLosesOneEntryNotTheRest)
+{
+	for (bool gz : {false, true})
+	{
+		hslam::testing::CTempDir tmp;
+		auto objs = scanObjects(20);
+		objs[9].back() ^= 0x01;  // the end-of-object flag of scan 9
+		objs[14][40] ^= 0x10;  // inside scan 14's header fields: a bit of rightToLeft/maxRange
+		objs[14][objs[14].size() - 1] = 0x00;
+		writeFile(tmp.file("flipped.rawlog"), objs, gz);
+		const auto r = readAll(tmp.file("flipped.rawlog"));
+		EXPECT_EQ(r.error, "");
+		ASSERT_EQ(r.stamps.size(), 18u);
+		EXPECT_EQ(r.stamps[8], 1008.0);
+		EXPECT_EQ(r.stamps[9], 1010.0);
+		EXPECT_EQ(r.stamps.back(), 1019.0);
+		ASSERT_EQ(r.problems.size(), 2u);
+		EXPECT_EQ(r.problems[0].entry, 9u);
+		EXPECT_EQ(r.problems[0].skipped_bytes, objs[9].size());
+		EXPECT_EQ(r.problems[1].skipped_bytes, objs[14].size());
+		EXPECT_NE(r.problems[0].message.find("flipped.rawlog: entry 9: corrupt data"), std::string::npos) << r.problems[0].message;
+	}
+}
+
+TEST(RawlogReader, TruncatedFileKeepsWhatWasReadAndSaysTruncated)
+{
+	hslam::testing::CTempDir tmp;
+	auto objs = scanObjects(10);
+	objs[7].resize(objs[7].size() / 2);
+	objs.resize(8);
+	writeFile(tmp.file("cut.rawlog.gz"), objs, true);
+	const auto r = readAll(tmp.file("cut.rawlog.gz"));
+	EXPECT_EQ(r.stamps.size(), 7u);
+	EXPECT_NE(r.error.find("cut.rawlog.gz: entry 7: file is truncated"), std::string::npos) << r.error;
+	EXPECT_TRUE(r.problems.empty());
+}
+
+TEST(RawlogReader, GarbageWithNoObjectAfterItIsAnError)
+{
+	hslam::testing::CTempDir tmp;
+	auto objs = scanObjects(3);
+	objs.push_back(TBytes(300, 0xA5));
+	writeFile(tmp.file("tail.rawlog"), objs, false);
+	const auto r = readAll(tmp.file("tail.rawlog"));
+	EXPECT_EQ(r.stamps.size(), 3u);
+	EXPECT_NE(r.error.find("tail.rawlog: entry 3: corrupt data"), std::string::npos) << r.error;
+	EXPECT_NE(r.error.find("no readable object after byte"), std::string::npos) << r.error;
+}
