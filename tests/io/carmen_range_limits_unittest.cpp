@@ -22,14 +22,17 @@ TEST(CarmenRangeLimits, MarkerFoundWhenItIsTheMaximumOfManyScans)
 
 TEST(CarmenRangeLimits, NoMarkerUsesParamThenGlobalMax)
 {
-	std::vector<double> maxima(400, 20.0);
-	for (int i = 0; i < 3; ++i) maxima[i] = 79.0;  // 1 % of 400 = 4 scans needed
+	// Scan maxima all different (no value repeats, so no no-return marker),
+	// three long returns among them.
+	std::vector<double> maxima(400);
+	for (size_t i = 0; i < maxima.size(); ++i) maxima[i] = 10.0 + 0.01 * static_cast<double>(i);
+	for (int i = 0; i < 3; ++i) maxima[i] = 79.0 + i;
 	auto limits = deriveCarmenRangeLimits(maxima, 50.0, 0.0);
 	EXPECT_FALSE(limits.noReturn_m.has_value());
 	EXPECT_DOUBLE_EQ(limits.maxRange_m, 50.0);
 	EXPECT_TRUE(limits.isValid(79.0));
 	limits = deriveCarmenRangeLimits(maxima, std::nullopt, 0.0);
-	EXPECT_DOUBLE_EQ(limits.maxRange_m, 79.0);
+	EXPECT_DOUBLE_EQ(limits.maxRange_m, 81.0);
 	EXPECT_NE(limits.reason.find("no no-return marker"), std::string::npos) << limits.reason;
 }
 
