@@ -14,6 +14,7 @@
 #include "pioneer_mode.h"
 #include "sim_mode.h"
 
+#include <hslam/common/version.h>
 #include <hslam/common/command_line.h>
 #include <hslam/common/parse_number.h>
 #include <hslam/sim/nav_scenarios.h>
@@ -64,7 +65,7 @@ int main(int argc, char** argv)
 	{
 		TCLAP::CmdLine cmd("Drives the P3-DX (simulated or real) to targets with the subsumption controller of "
 						   "thesis 4.2, recording a rawlog, the live map, the path (CSV, PNG).",
-						   ' ', "hslam");
+						   ' ', hslam::common::versionText());
 		TCLAP::ValueArg<std::string> simArg("", "sim", "Simulator INI (world, robot, sensors)", false, "", "SIM.ini", cmd);
 		TCLAP::ValueArg<int> trialArg("", "thesis-trial", "Thesis 4.2.2 trial 1, 2 or 3 (figures 66-68) in the lab world",
 									  false, 0, "N", cmd);

@@ -11,6 +11,7 @@
 #include "umbmark_inputs.h"
 #include "umbmark_report.h"
 
+#include <hslam/common/version.h>
 #include <hslam/common/command_line.h>
 #include <hslam/common/parse_number.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
@@ -72,7 +73,7 @@ int main(int argc, char** argv)
 	{
 		TCLAP::CmdLine cmd("UMBmark odometry calibration (thesis 4.1): CW/CCW centres of gravity, alpha, beta, R, "
 						   "Ed, Eb, encoder factors, E_max,syst; writes the [odometry_correction] INI section.",
-						   ' ', "hslam");
+						   ' ', hslam::common::versionText());
 		TCLAP::UnlabeledValueArg<std::string> folderArg(
 			"folder", "Simulator UMBmark folder with waypoints.csv and ground_truth.tum (e.g. rawlog_samples/umbmark)",
 			false, "", "FOLDER", cmd);

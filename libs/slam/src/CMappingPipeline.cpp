@@ -37,6 +37,12 @@ CMappingPipeline::CMappingPipeline(const mrpt::config::CConfigFileBase& cfg)
 	  m_estimator(createPoseEstimator(m_poseOptions, cfg, m_timer)),
 	  m_odometry(common::loadedOptions<calib::TOdometryCorrection>(cfg, "odometry_correction"))
 {
+	if (m_poseOptions.method != "map" && m_poseOptions.method != "lines+map")
+	{  // checks and records the local-map front-end's sections too (config_used.ini holds every section)
+		TPoseEstimationOptions other = m_poseOptions;
+		other.method = "map";
+		m_localMapDefaults = std::make_unique<CLocalMapPoseEstimator>(other, cfg, m_timer);
+	}
 	if (m_dynamicOptions.enabled)
 	{
 		try
@@ -60,6 +66,8 @@ void CMappingPipeline::saveOptions(mrpt::config::CConfigFileBase& out) const
 	common::saveOptions(m_grid.options(), out, "grid");
 	common::saveOptions(m_laserInserter.options(), out, "laser_model");
 	common::saveOptions(m_poseOptions, out, "pose_estimation");
+	common::saveOptions(m_odometry.correction(), out, "odometry_correction");
+	if (m_localMapDefaults) m_localMapDefaults->saveOptions(out);  // sections of the other front-end
 	m_estimator->saveOptions(out);
 	common::saveOptions(m_dynamicOptions, out, "dynamic_objects");
 	common::saveOptions(m_sonar.mappingOptions(), out, "sonar_model");

@@ -160,6 +160,7 @@ class CMappingPipeline
 	size_t m_debugFramesMax = 0;
 	std::vector<TDebugFrame> m_debugFrames;
 	std::unique_ptr<CPoseEstimator> m_estimator;
+	std::unique_ptr<CPoseEstimator> m_localMapDefaults;  //!< unused estimator whose options config_used.ini records
 	COdometryTracker m_odometry;
 	mrpt::poses::CPose2D m_deadReckoningPose;
 	common::TTrajectory2D m_trajectory, m_odometryTrajectory;

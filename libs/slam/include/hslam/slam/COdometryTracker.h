@@ -32,6 +32,7 @@ class COdometryTracker
 	COdometryTracker() = default;
 	/** With a UMBmark calibration (thesis 4.1) applied to every increment. */
 	explicit COdometryTracker(const calib::TOdometryCorrection& correction) : m_correction(correction) {}
+	const calib::TOdometryCorrection& correction() const { return m_correction.options(); }
 
 	/** Prefix of the CObservationComment text that marks missing odometry
 	 * (MRPT does not serialize a comment's sensorLabel, so the text carries it). */
