@@ -62,5 +62,9 @@ TEST(MapMatcherRealData, SmallErrorFromPerturbedReference)
 		if (store.wantsKeyframe(truth)) store.add(scans[i].points, truth, Eigen::Matrix3d::Zero(), scans[i].t_s);
 	}
 	std::cout << "rms_xy_m=" << std::sqrt(se_xy / n) << " rms_theta_deg=" << std::sqrt(se_th / n) * 180 / M_PI << "\n";
+	// aces, measured: 0.063 m / 0.91 deg from a 0.11 m / 3 deg seed error (the
+	// x offset stays where a corridor leaves x unconstrained, by design).
+	EXPECT_LT(std::sqrt(se_xy / n), 0.08);
+	EXPECT_LT(std::sqrt(se_th / n) * 180 / M_PI, 1.0);
 }
 }  // namespace
