@@ -15,7 +15,8 @@ mrpt::poses::CPose2D toPose(const fusion::TPoseVec& v) { return {v[0], v[1], v[2
 
 std::vector<std::string> CScanMatchingPoseEstimator::sections()
 {
-	std::vector<std::string> s{"line_extraction", "line_matching", "icp", "icp_map", "ukf", "odometry_noise"};
+	std::vector<std::string> s{"line_extraction", "line_matching", "icp",	  "icp_map",
+							   "ukf",			  "odometry_noise", "motion_prior"};
 	for (const auto& m : features::lineExtractorMethods()) s.push_back(features::lineExtractorSection(m));
 	return s;
 }
@@ -32,6 +33,7 @@ CScanMatchingPoseEstimator::CScanMatchingPoseEstimator(const TPoseEstimationOpti
 	  m_lineMatcher(common::loadedOptions<matching::CLineScanMatcher::TOptions>(cfg, "line_matching")),
 	  m_icp(common::loadedOptions<matching::CIcpMatcher::TOptions>(cfg, "icp")),
 	  m_keyframes(common::loadedOptions<matching::CKeyframePointMap::TOptions>(cfg, "icp_map")),
+	  m_motion(common::loadedOptions<CMotionPrior::TOptions>(cfg, "motion_prior")),
 	  m_ukf(m_ukfOptions.filter),
 	  m_lineNoise(m_ukfOptions.adaptation),
 	  m_icpNoise(m_ukfOptions.adaptation),
@@ -46,21 +48,27 @@ void CScanMatchingPoseEstimator::saveOptions(mrpt::config::CConfigFileBase& out)
 	common::saveOptions(m_lineMatcher.options(), out, "line_matching");
 	common::saveOptions(m_icp.options(), out, "icp");
 	common::saveOptions(m_keyframes.options(), out, "icp_map");
+	common::saveOptions(m_motion.options(), out, "motion_prior");
 	common::saveOptions(m_extraction, out, "line_extraction");
 	m_extractor->saveOptions(out, features::lineExtractorSection(m_extraction.method));
 }
 
 mrpt::poses::CPose2D CScanMatchingPoseEstimator::currentPose() const { return toPose(m_ukf.pose()); }
 
-bool CScanMatchingPoseEstimator::dueForMatch() const
+bool CScanMatchingPoseEstimator::dueByTime(double t_s) const
 {
-	return m_gapSinceMatch || m_sinceMatch.norm() >= m_options.match_every_m ||
+	return m_options.match_every_s > 0 && t_s - m_lastMatch_s >= m_options.match_every_s;
+}
+
+bool CScanMatchingPoseEstimator::dueForMatch(double t_s) const
+{
+	return m_gapSinceMatch || dueByTime(t_s) || m_sinceMatch.norm() >= m_options.match_every_m ||
 		   std::abs(m_sinceMatch.phi()) >= m_options.match_every_rad;
 }
 
 bool CScanMatchingPoseEstimator::dueForIcp() const
 {
-	return m_gapSinceMatch || m_sinceIcp.norm() >= m_options.icp_every_m ||
+	return m_gapSinceMatch || m_timedMatch || m_sinceIcp.norm() >= m_options.icp_every_m ||
 		   std::abs(m_sinceIcp.phi()) >= m_options.icp_every_rad;
 }
 
@@ -77,28 +85,21 @@ matching::TLineScanFrame CScanMatchingPoseEstimator::makeFrame(const common::TRa
 	return frame;
 }
 
-void CScanMatchingPoseEstimator::predict(const TOdometryIncrement& increment)
+void CScanMatchingPoseEstimator::predict(const TOdometryIncrement& increment, const TMotionPrior& prior)
 {
 	common::CStageTimer::CScope t(m_timer, "ukf");
-	if (increment.known)
-	{
-		const fusion::TPoseVec u = toVec(increment.delta);
+	const double sxy = m_ukfOptions.unknown_motion_xy_std_m, sth = m_ukfOptions.unknown_motion_theta_std_rad;
+	const Eigen::Matrix3d unknownCov = Eigen::Vector3d(sxy * sxy, sxy * sxy, sth * sth).asDiagonal();
+	const fusion::TPoseVec u = toVec(prior.delta);
+	if (prior.source == TMotionPrior::ESource::odometry)
 		m_ukf.predict(u, fusion::odometryIncrementCovariance(m_odometryNoise, u));
-		m_sinceMatch = m_sinceMatch + increment.delta;
-		m_sinceIcp = m_sinceIcp + increment.delta;
-	}
-	else
-	{  // unknown motion: stay, but let the next match move the pose freely
-		const double sxy = m_ukfOptions.unknown_motion_xy_std_m, sth = m_ukfOptions.unknown_motion_theta_std_rad;
-		m_ukf.predict(fusion::TPoseVec::Zero(), Eigen::Vector3d(sxy * sxy, sxy * sxy, sth * sth).asDiagonal());
-		m_gapSinceMatch = true;
-	}
+	else  // a gap keeps the wide covariance of [ukf]; frozen/stalled/jump the prior's
+		m_ukf.predict(u, increment.known ? prior.covariance : Eigen::Matrix3d(prior.covariance.cwiseMax(unknownCov)));
+	m_sinceMatch = m_sinceMatch + prior.delta;
+	m_sinceIcp = m_sinceIcp + prior.delta;
+	if (prior.source != TMotionPrior::ESource::odometry) m_gapSinceMatch = true;
 	m_sinceMatchCov = fusion::odometryIncrementCovariance(m_odometryNoise, toVec(m_sinceMatch));
-	if (m_gapSinceMatch)
-	{
-		const double sxy = m_ukfOptions.unknown_motion_xy_std_m, sth = m_ukfOptions.unknown_motion_theta_std_rad;
-		m_sinceMatchCov += Eigen::Vector3d(sxy * sxy, sxy * sxy, sth * sth).asDiagonal();
-	}
+	if (m_gapSinceMatch) m_sinceMatchCov += unknownCov;
 }
 
 std::optional<matching::TPoseMatch> CScanMatchingPoseEstimator::runIcp(
@@ -177,10 +178,12 @@ TPoseEstimate CScanMatchingPoseEstimator::update(const TOdometryIncrement& incre
 												 const std::vector<bool>* /*excludedBeams: MRPT ICP path, kept as it was*/)
 {
 	TPoseEstimate estimate;
-	if (m_started)
-		predict(increment);
-	if (!m_started || dueForMatch())
+	const TMotionPrior prior = m_motion.prior(increment, scan.t_s);
+	estimate.motion_prior = prior.reason;
+	if (m_started) predict(increment, prior);
+	if (!m_started || dueForMatch(scan.t_s))
 	{
+		m_timedMatch = dueByTime(scan.t_s);  // a timed match checks with ICP too
 		matching::TLineScanFrame frame = makeFrame(scan);
 		if (m_started) matchAndFuse(frame, estimate);
 		m_started = true;
@@ -192,9 +195,11 @@ TPoseEstimate CScanMatchingPoseEstimator::update(const TOdometryIncrement& incre
 		m_sinceMatch = mrpt::poses::CPose2D();
 		m_sinceMatchCov.setZero();
 		m_gapSinceMatch = false;
+		m_lastMatch_s = scan.t_s;
 	}
 	estimate.pose = currentPose();
 	estimate.covariance = m_ukf.covariance();
+	m_motion.observePose(estimate.pose, scan.t_s);
 	return estimate;
 }
 

@@ -136,14 +136,15 @@ void writePoseEstimatesCsv(const std::vector<CMappingPipeline::TTimedEstimate>& 
 	std::ofstream f(path);
 	if (!f) throw std::runtime_error(path + ": cannot write");
 	f << "t_s,x_m,y_m,theta_rad,std_x_m,std_y_m,std_theta_rad,matched,match_method,match_quality,match_accepted,"
-		 "match_nis\n";
+		 "match_nis,motion_prior\n";
 	f.precision(9);
 	for (const auto& [t, e] : estimates)
-		f << t << ',' << e.pose.x() << ',' << e.pose.y() << ',' << e.pose.phi() << ','
+		f << std::fixed << std::setprecision(6) << t << std::defaultfloat << std::setprecision(9) << ','
+		  << e.pose.x() << ',' << e.pose.y() << ',' << e.pose.phi() << ','
 		  << std::sqrt(std::max(0.0, e.covariance(0, 0))) << ',' << std::sqrt(std::max(0.0, e.covariance(1, 1))) << ','
 		  << std::sqrt(std::max(0.0, e.covariance(2, 2))) << ',' << (e.matched ? 1 : 0) << ','
 		  << (e.matched ? e.match_method : "") << ',' << (e.matched ? matching::toString(e.match_quality) : "") << ','
-		  << (e.match_accepted ? 1 : 0) << ',' << e.match_nis << '\n';
+		  << (e.match_accepted ? 1 : 0) << ',' << e.match_nis << ',' << e.motion_prior << '\n';
 	if (!f) throw std::runtime_error(path + ": write failed");
 }
 

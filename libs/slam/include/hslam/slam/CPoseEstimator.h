@@ -64,6 +64,11 @@ struct TPoseEstimationOptions
 	double icp_every_m = 0.5;
 	double icp_every_rad = 10.0 * M_PI / 180.0;
 	bool icp_always = true;  //!< lines+icp: ICP at every ICP step (false: only when the line match is weak/failed)
+	/** Match at least this often in time (s) even when odometry reports no
+	 * travel: wheel readings that stopped or creep (a "laser only" log) are
+	 * only noticed when a match finds the motion odometry missed (issue 12).
+	 * 0 = never by time. */
+	double match_every_s = 0.5;
 
 	template <class V>
 	void visit(V& v)
@@ -74,6 +79,7 @@ struct TPoseEstimationOptions
 		v.real("icp_every_m", icp_every_m, 0.0, 100.0);
 		v.degrees("icp_every_deg", icp_every_rad, 0.0, 360.0);
 		v.flag("icp_always", icp_always);
+		v.real("match_every_s", match_every_s, 0.0, 1e6);
 	}
 };
 

@@ -17,11 +17,17 @@
  * (a wrong match is rejected, the UKF keeps predicting from odometry), weak
  * matches get an inflated covariance, and each matcher's covariance scale is
  * adapted online from its innovations (fusion::CAdaptiveMeasurementNoise).
- * A stretch without odometry predicts zero motion with a large covariance
- * (TUnknownMotionOptions), so the next match is free to correct it.
+ * Odometry is trusted only while it behaves like odometry (CMotionPrior,
+ * [motion_prior]): a gap, frozen or stalled wheel readings, or a jump make the
+ * prediction the constant velocity of the last estimates, and the scan is
+ * then matched at every scan (ICP included) until odometry is trusted again,
+ * so a log without usable odometry is tracked by matching alone. A gap marker
+ * (no odometry at all) keeps the large covariance of [ukf]
+ * unknown_motion_*_std, so the next match is free to correct it. A match also
+ * runs every match_every_s of time, so odometry that creeps is noticed.
  *
  * INI sections: [pose_estimation], [line_extraction], [line_extraction_<method>], [line_matching],
- * [icp], [icp_map], [ukf], [odometry_noise]. */
+ * [icp], [icp_map], [ukf], [odometry_noise], [motion_prior]. */
 #pragma once
 
 #include <hslam/features/CLineExtractor.h>
@@ -31,6 +37,7 @@
 #include <hslam/matching/CIcpMatcher.h>
 #include <hslam/matching/CKeyframePointMap.h>
 #include <hslam/matching/CLineScanMatcher.h>
+#include <hslam/slam/CMotionPrior.h>
 #include <hslam/slam/CPoseEstimator.h>
 
 #include <memory>
@@ -92,10 +99,11 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
    private:
 	bool usesLines() const { return m_options.method != "icp"; }
 	bool usesIcp() const { return m_options.method != "lines"; }
-	bool dueForMatch() const;
+	bool dueByTime(double t_s) const;
+	bool dueForMatch(double t_s) const;
 	bool dueForIcp() const;
 	matching::TLineScanFrame makeFrame(const common::TRangeData& scan);
-	void predict(const TOdometryIncrement& increment);
+	void predict(const TOdometryIncrement& increment, const TMotionPrior& prior);
 	void matchAndFuse(matching::TLineScanFrame& frame, TPoseEstimate& estimate);
 	/** ICP from each seed (world frame, preferred first); the best paired result. */
 	std::optional<matching::TPoseMatch> runIcp(const matching::TLineScanFrame& frame,
@@ -112,6 +120,7 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	matching::CLineScanMatcher m_lineMatcher;
 	matching::CIcpMatcher m_icp;
 	matching::CKeyframePointMap m_keyframes;
+	CMotionPrior m_motion;
 	fusion::CPoseUKF m_ukf;
 	fusion::CAdaptiveMeasurementNoise m_lineNoise, m_icpNoise;
 	common::CStageTimer& m_timer;
@@ -121,7 +130,9 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	mrpt::poses::CPose2D m_sinceMatch;  //!< odometry since the last matched scan (its robot frame)
 	mrpt::poses::CPose2D m_sinceIcp;  //!< odometry since the last ICP match
 	Eigen::Matrix3d m_sinceMatchCov = Eigen::Matrix3d::Zero();
-	bool m_gapSinceMatch = false;
+	bool m_gapSinceMatch = false;  //!< the prior was not odometry since the last match: match (and ICP) now
+	double m_lastMatch_s = 0;  //!< time of the last matched scan
+	bool m_timedMatch = false;  //!< this match is due by time only (match_every_s)
 };
 
 }  // namespace hslam::slam
