@@ -29,21 +29,22 @@ bool fitNormal(const mrpt::maps::CSimplePointsMap& ref, const std::vector<size_t
 }
 }  // namespace
 
-Eigen::Matrix3d geometricAlignmentCovariance(const mrpt::maps::CSimplePointsMap& reference,
-											 const mrpt::maps::CSimplePointsMap& current,
-											 const mrpt::poses::CPose2D& pose,
-											 const TGeometricCovarianceOptions& o, size_t* matchedPoints)
+namespace
+{
+/** The covariance for `count` current points given by `pointAt(k)` (robot frame). */
+template <class PointAt>
+Eigen::Matrix3d alignmentCovariance(const mrpt::maps::CSimplePointsMap& reference, size_t count, PointAt pointAt,
+									const mrpt::poses::CPose2D& pose, const TGeometricCovarianceOptions& o,
+									size_t* matchedPoints)
 {
 	Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
 	double residual2 = 0;
 	size_t matched = 0;
 	std::vector<size_t> idx;
 	std::vector<float> dist2;
-	const auto& xs = current.getPointsBufferRef_x();
-	const auto& ys = current.getPointsBufferRef_y();
-	for (size_t k = 0; k < current.size(); ++k)
+	for (size_t k = 0; k < count; ++k)
 	{
-		const auto w = pose + mrpt::math::TPoint2D(xs[k], ys[k]);
+		const auto w = pose + pointAt(k);
 		reference.kdTreeNClosestPoint2DIdx(static_cast<float>(w.x), static_cast<float>(w.y),
 										   static_cast<size_t>(o.normal_neighbours), idx, dist2);
 		if (idx.empty() || dist2[0] > o.max_match_distance_m * o.max_match_distance_m) continue;
@@ -65,7 +66,39 @@ Eigen::Matrix3d geometricAlignmentCovariance(const mrpt::maps::CSimplePointsMap&
 	Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(H);
 	Eigen::Vector3d inv;
 	for (int i = 0; i < 3; ++i) inv[i] = std::min(sigma2 / std::max(eig.eigenvalues()[i], 1e-12), cap2);
-	return eig.eigenvectors() * inv.asDiagonal() * eig.eigenvectors().transpose();
+	Eigen::Matrix3d cov = eig.eigenvectors() * inv.asDiagonal() * eig.eigenvectors().transpose();
+	// A translation direction constrained by fewer than degenerate_min_fraction
+	// of the matched points (unit-weight information of the translation
+	// block: each point counts along its normal) is unconstrained. Rotation
+	// is left as it is: heading is what matching must keep correcting.
+	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> tr(H.topLeftCorner<2, 2>());
+	const double minEigen = o.degenerate_min_fraction * static_cast<double>(matched);
+	for (int i = 0; i < 2; ++i)
+		if (tr.eigenvalues()[i] < minEigen)
+			cov.topLeftCorner<2, 2>() += cap2 * tr.eigenvectors().col(i) * tr.eigenvectors().col(i).transpose();
+	return cov;
+}
+}  // namespace
+
+Eigen::Matrix3d geometricAlignmentCovariance(const mrpt::maps::CSimplePointsMap& reference,
+											 const mrpt::maps::CSimplePointsMap& current,
+											 const mrpt::poses::CPose2D& pose,
+											 const TGeometricCovarianceOptions& o, size_t* matchedPoints)
+{
+	const auto& xs = current.getPointsBufferRef_x();
+	const auto& ys = current.getPointsBufferRef_y();
+	return alignmentCovariance(
+		reference, current.size(), [&](size_t k) { return mrpt::math::TPoint2D(xs[k], ys[k]); }, pose, o,
+		matchedPoints);
+}
+
+Eigen::Matrix3d geometricAlignmentCovariance(const mrpt::maps::CSimplePointsMap& reference,
+											 const std::vector<mrpt::math::TPoint2D>& current,
+											 const mrpt::poses::CPose2D& pose,
+											 const TGeometricCovarianceOptions& o, size_t* matchedPoints)
+{
+	return alignmentCovariance(
+		reference, current.size(), [&](size_t k) { return current[k]; }, pose, o, matchedPoints);
 }
 
 }  // namespace hslam::matching

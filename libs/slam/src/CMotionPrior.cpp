@@ -3,6 +3,8 @@
 
 #include <mrpt/math/wrap2pi.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 
@@ -41,7 +43,8 @@ TMotionPrior CMotionPrior::prior(const TOdometryIncrement& increment, double t_s
 	m_zeroIncrements = zero ? m_zeroIncrements + 1 : 0;
 	if (m_zeroIncrements >= m_options.frozen_min_scans) return constantVelocity(dt, "frozen");
 	if (isJump(increment.delta, dt)) return constantVelocity(dt, "jump");
-	if (odometryStalled()) return constantVelocity(dt, "stalled");
+	m_stalled = odometryStalled();
+	if (m_stalled) return constantVelocity(dt, "stalled");
 	TMotionPrior p;
 	p.delta = increment.delta;
 	return p;
@@ -54,7 +57,24 @@ bool CMotionPrior::odometryStalled() const
 		odo_m += i.odometry_m, odo_rad += i.odometry_rad, est_m += i.estimate_m, est_rad += i.estimate_rad;
 	const double k = m_options.disagreement_ratio;
 	return (est_m >= m_options.disagreement_min_motion_m && odo_m < k * est_m) ||
-		   (est_rad >= m_options.disagreement_min_rotation_rad && odo_rad < k * est_rad);
+		   (est_rad >= m_options.disagreement_min_rotation_rad && odo_rad < k * est_rad) ||
+		   m_rejectedInARow >= m_options.rejected_matches_for_stall;
+}
+
+void CMotionPrior::observeMatch(const mrpt::poses::CPose2D& measured, const Eigen::Matrix3d& covariance,
+								bool accepted, double t_s)
+{
+	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(covariance.topLeftCorner<2, 2>());
+	if (!(eig.eigenvalues().maxCoeff() <= m_options.measured_max_std_m * m_options.measured_max_std_m)) return;
+	m_rejectedInARow = accepted ? 0 : m_rejectedInARow + 1;
+	if (m_havePreviousMatch && t_s > m_previousMatch_s && (m_stalled || m_rejectedInARow > 1))
+	{  // the estimate follows odometry until the filter lets go: take the measured velocity
+		const double dt = t_s - m_previousMatch_s;
+		const mrpt::poses::CPose2D d = measured - m_previousMatch;
+		m_velocity = Eigen::Vector3d(d.x() / dt, d.y() / dt, mrpt::math::wrapToPi(d.phi()) / dt);
+		m_measuredVelocity_s = t_s;
+	}
+	m_previousMatch = measured, m_previousMatch_s = t_s, m_havePreviousMatch = true;
 }
 
 void CMotionPrior::observePose(const mrpt::poses::CPose2D& pose, double t_s)
@@ -63,7 +83,8 @@ void CMotionPrior::observePose(const mrpt::poses::CPose2D& pose, double t_s)
 	{
 		const double dt = t_s - m_lastPose_s;
 		const mrpt::poses::CPose2D d = pose - m_lastPose;  // in the previous robot frame
-		m_velocity = Eigen::Vector3d(d.x() / dt, d.y() / dt, mrpt::math::wrapToPi(d.phi()) / dt);
+		const bool measuredVelocity = m_measuredVelocity_s == t_s;
+		if (!measuredVelocity) m_velocity = Eigen::Vector3d(d.x() / dt, d.y() / dt, mrpt::math::wrapToPi(d.phi()) / dt);
 		m_recent.push_back({t_s, m_lastOdometry.norm(), std::abs(m_lastOdometry.phi()), d.norm(),
 							std::abs(mrpt::math::wrapToPi(d.phi()))});
 		while (!m_recent.empty() && m_recent.front().t_s < t_s - m_options.disagreement_window_s) m_recent.pop_front();

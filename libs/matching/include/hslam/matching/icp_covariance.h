@@ -18,6 +18,8 @@
 
 #include <Eigen/Core>
 
+#include <vector>
+
 namespace hslam::matching
 {
 struct TGeometricCovarianceOptions
@@ -27,12 +29,25 @@ struct TGeometricCovarianceOptions
 	double min_sigma_m = 0.02;  //!< floor of the residual std (laser noise)
 	double correlation_factor = 10.0;  //!< points per independent error (neighbouring beams are correlated)
 	double max_std_m = 100.0;  //!< cap of the std in an unconstrained direction
+	/** A translation direction along which fewer than this fraction of the
+	 * matched points constrain the pose (eigenvalue of the unit-weight
+	 * information of the translation) counts as unconstrained: its variance
+	 * gets the cap. A few points (a door recess in a corridor) do not outweigh the pull
+	 * of a hundred wall points on a point-to-point ICP, whose result along the
+	 * corridor is then biased towards the seed (issue 12, "long featureless
+	 * corridor"); 0 = off. */
+	double degenerate_min_fraction = 0.0;
 };
 
 /** Covariance of `pose` (pose of the current scan in the reference frame);
  * nullopt-like identity*max_std^2 if fewer than 10 points match. */
 Eigen::Matrix3d geometricAlignmentCovariance(const mrpt::maps::CSimplePointsMap& reference,
 											 const mrpt::maps::CSimplePointsMap& current,
+											 const mrpt::poses::CPose2D& pose,
+											 const TGeometricCovarianceOptions& options, size_t* matchedPoints = nullptr);
+/** The same for current points given in the robot frame. */
+Eigen::Matrix3d geometricAlignmentCovariance(const mrpt::maps::CSimplePointsMap& reference,
+											 const std::vector<mrpt::math::TPoint2D>& current,
 											 const mrpt::poses::CPose2D& pose,
 											 const TGeometricCovarianceOptions& options, size_t* matchedPoints = nullptr);
 

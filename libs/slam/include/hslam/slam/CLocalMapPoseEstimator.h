@@ -124,6 +124,7 @@ class CLocalMapPoseEstimator : public CPoseEstimator
 	mrpt::poses::CPose2D m_sinceMatch;  //!< predicted motion since the last match
 	bool m_unreliableSinceMatch = false;  //!< a non-odometry prior since the last accepted match
 	int m_failedMatches = 0;  //!< failed or rejected matches in a row
+	double m_matchTime_s = 0;  //!< time of the scan being processed
 };
 
 }  // namespace hslam::slam

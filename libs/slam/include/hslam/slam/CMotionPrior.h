@@ -11,12 +11,17 @@
  *  - stalled  (over the last disagreement_window_s the estimate moved at
  *             least disagreement_min_motion_m but odometry less than
  *             disagreement_ratio of that, or the same in rotation:
- *             "wheel readings nearly constant" without being exactly so);
+ *             "wheel readings nearly constant" without being exactly so; or
+ *             the filter rejected rejected_matches_for_stall well-constrained
+ *             matches in a row: a filter that trusts creeping odometry
+ *             rejects the matches that contradict it, so the estimate alone
+ *             would never move);
  *  - jump     (an increment faster than max_speed_mps / max_turn_rate_rad_s
  *             over the scan interval: readings resuming after a stall with
  *             the motion of the whole stall, a wrap, a reset): unknown too.
  * The constant-velocity prior uses the velocity of the last two estimated
- * poses (velocity()), with a standard deviation growing with the interval,
+ * poses (velocity()), or of the last two measured poses when the filter
+ * rejected them, with a standard deviation growing with the interval,
  * so matching against the map carries the robot alone (laser-only logs).
  * After any unreliable stretch the next match is a recovery (wider search). */
 #pragma once
@@ -59,6 +64,8 @@ class CMotionPrior
 		double disagreement_min_motion_m = 0.3;
 		double disagreement_min_rotation_rad = 20.0 * M_PI / 180.0;
 		double disagreement_ratio = 0.25;
+		double measured_max_std_m = 0.1;  //!< see observeMatch()
+		int rejected_matches_for_stall = 3;  //!< see file comment ("stalled")
 
 		template <class V>
 		void visit(V& v)
@@ -74,6 +81,8 @@ class CMotionPrior
 			v.real("disagreement_min_motion_m", disagreement_min_motion_m, 0.01, 100.0);
 			v.degrees("disagreement_min_rotation_deg", disagreement_min_rotation_rad, 1.0, 3600.0);
 			v.real("disagreement_ratio", disagreement_ratio, 0.0, 1.0);
+			v.real("measured_max_std_m", measured_max_std_m, 0.001, 100.0);
+			v.integer("rejected_matches_for_stall", rejected_matches_for_stall, 1, 1000);
 		}
 	};
 
@@ -85,6 +94,12 @@ class CMotionPrior
 	TMotionPrior prior(const TOdometryIncrement& increment, double t_s);
 	/** The estimated pose at the scan at `t_s` (feeds the velocity). */
 	void observePose(const mrpt::poses::CPose2D& pose, double t_s);
+	/** A pose the scan matcher measured at the scan at `t_s` (world frame)
+	 * and whether the filter `accepted` it; used only if its translation is
+	 * constrained in every direction (std <= measured_max_std_m: a corridor
+	 * match says nothing about motion along the axis). */
+	void observeMatch(const mrpt::poses::CPose2D& measured, const Eigen::Matrix3d& covariance, bool accepted,
+					  double t_s);
 	/** Robot-frame velocity (m/s, m/s, rad/s) from the last two estimates. */
 	Eigen::Vector3d velocity() const { return m_velocity; }
 
@@ -98,6 +113,12 @@ class CMotionPrior
 		double t_s, odometry_m, odometry_rad, estimate_m, estimate_rad;
 	};
 	std::deque<TIntervalMotion> m_recent;  //!< intervals within disagreement_window_s
+	bool m_stalled = false;  //!< the last prior was "stalled"
+	int m_rejectedInARow = 0;  //!< well-constrained matches the filter rejected in a row
+	mrpt::poses::CPose2D m_previousMatch;  //!< the last well-constrained measured pose...
+	double m_previousMatch_s = 0;  //!< ...its time
+	bool m_havePreviousMatch = false;
+	double m_measuredVelocity_s = -1;  //!< time of the scan whose velocity came from the matches
 	mrpt::poses::CPose2D m_lastOdometry;  //!< odometry of the latest interval (zero if unknown)
 
 	TOptions m_options;

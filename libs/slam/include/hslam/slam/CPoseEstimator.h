@@ -69,6 +69,12 @@ struct TPoseEstimationOptions
 	 * only noticed when a match finds the motion odometry missed (issue 12).
 	 * 0 = never by time. */
 	double match_every_s = 0.5;
+	/** icp and lines+icp: "mrpt" = MRPT's point-to-point ICP against the
+	 * points of recent keyframes ([icp], [icp_map]); "point_to_line" =
+	 * CPointToLineIcp against the local map of the keyframe store
+	 * ([keyframes], [map_matching]); "mrpt+point_to_line" = MRPT's result
+	 * refined by CPointToLineIcp (MRPT's basin, no sliding along walls). */
+	std::string icp_matcher = "mrpt";
 
 	template <class V>
 	void visit(V& v)
@@ -80,6 +86,7 @@ struct TPoseEstimationOptions
 		v.degrees("icp_every_deg", icp_every_rad, 0.0, 360.0);
 		v.flag("icp_always", icp_always);
 		v.real("match_every_s", match_every_s, 0.0, 1e6);
+		v.choice("icp_matcher", icp_matcher, {"mrpt", "point_to_line", "mrpt+point_to_line"});
 	}
 };
 

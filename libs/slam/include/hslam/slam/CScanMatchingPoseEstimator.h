@@ -24,7 +24,8 @@
  * so a log without usable odometry is tracked by matching alone. A gap marker
  * (no odometry at all) keeps the large covariance of [ukf]
  * unknown_motion_*_std, so the next match is free to correct it. A match also
- * runs every match_every_s of time, so odometry that creeps is noticed.
+ * runs every match_every_s of time while odometry reports no travel, so
+ * odometry that stopped or creeps is noticed.
  *
  * INI sections: [pose_estimation], [line_extraction], [line_extraction_<method>], [line_matching],
  * [icp], [icp_map], [ukf], [odometry_noise], [motion_prior]. */
@@ -36,6 +37,9 @@
 #include <hslam/fusion/odometry_noise.h>
 #include <hslam/matching/CIcpMatcher.h>
 #include <hslam/matching/CKeyframePointMap.h>
+#include <hslam/matching/CKeyframeStore.h>
+#include <hslam/matching/CLocalPointMap.h>
+#include <hslam/matching/CPointToLineIcp.h>
 #include <hslam/matching/CLineScanMatcher.h>
 #include <hslam/slam/CMotionPrior.h>
 #include <hslam/slam/CPoseEstimator.h>
@@ -99,15 +103,25 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
    private:
 	bool usesLines() const { return m_options.method != "icp"; }
 	bool usesIcp() const { return m_options.method != "lines"; }
+	bool usesPointToLine() const { return m_options.icp_matcher != "mrpt"; }
+	/** The scan being processed and the beams left out of matching (people). */
+	struct TScanInput
+	{
+		const common::TRangeData& data;
+		const std::vector<bool>* excluded;
+	};
 	bool dueByTime(double t_s) const;
 	bool dueForMatch(double t_s) const;
 	bool dueForIcp() const;
 	matching::TLineScanFrame makeFrame(const common::TRangeData& scan);
 	void predict(const TOdometryIncrement& increment, const TMotionPrior& prior);
-	void matchAndFuse(matching::TLineScanFrame& frame, TPoseEstimate& estimate);
-	/** ICP from each seed (world frame, preferred first); the best paired result. */
-	std::optional<matching::TPoseMatch> runIcp(const matching::TLineScanFrame& frame,
+	void matchAndFuse(matching::TLineScanFrame& frame, const TScanInput& scan, TPoseEstimate& estimate);
+	/** ICP from each seed (world frame, preferred first); the best result. */
+	std::optional<matching::TPoseMatch> runIcp(const matching::TLineScanFrame& frame, const TScanInput& scan,
 												const std::vector<mrpt::poses::CPose2D>& seedsWorld);
+	std::optional<matching::TPoseMatch> runPointToLineIcp(const TScanInput& scan,
+														   const std::vector<mrpt::poses::CPose2D>& seedsWorld);
+	void addKeyframeIfDue(const matching::TLineScanFrame& frame, const TScanInput& scan);
 	void fuse(const matching::TPoseMatch& match, bool relative, fusion::CAdaptiveMeasurementNoise& noise,
 			  TPoseEstimate& estimate);
 	mrpt::poses::CPose2D currentPose() const;
@@ -119,7 +133,11 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	std::unique_ptr<features::CLineExtractor> m_extractor;
 	matching::CLineScanMatcher m_lineMatcher;
 	matching::CIcpMatcher m_icp;
-	matching::CKeyframePointMap m_keyframes;
+	matching::CIcpMatcher m_icpWithoutPrior;  //!< m_icp without the degeneracy cap (prior not odometry)
+	matching::CKeyframePointMap m_keyframes;  //!< icp_matcher = mrpt
+	matching::CKeyframeStore m_store;  //!< icp_matcher = point_to_line: keyframes with normals...
+	matching::CLocalPointMap m_localMap;  //!< ...the local map of the window around the robot...
+	matching::CPointToLineIcp m_pointToLine;  //!< ...and the matcher
 	CMotionPrior m_motion;
 	fusion::CPoseUKF m_ukf;
 	fusion::CAdaptiveMeasurementNoise m_lineNoise, m_icpNoise;
@@ -131,7 +149,8 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	mrpt::poses::CPose2D m_sinceIcp;  //!< odometry since the last ICP match
 	Eigen::Matrix3d m_sinceMatchCov = Eigen::Matrix3d::Zero();
 	bool m_gapSinceMatch = false;  //!< the prior was not odometry since the last match: match (and ICP) now
-	double m_lastMatch_s = 0;  //!< time of the last matched scan
+	double m_lastIcp_s = 0;  //!< time of the last ICP match
+	double m_matchTime_s = 0;  //!< time of the scan being matched
 	bool m_timedMatch = false;  //!< this match is due by time only (match_every_s)
 };
 
