@@ -34,7 +34,7 @@ struct TScores
 double rpe5(const eval::TTrajectoryErrors& e)
 {
 	for (const auto& r : e.rpe)
-		if (r.name == "5m") return r.errors.translation_m.rmse;
+		if (r.name == "5m") return r.errors.trans_m.rmse;
 	return -1;
 }
 
@@ -56,10 +56,10 @@ TScores runDefault(const std::string& folder, const std::vector<std::string>& ov
 std::string shipped(const std::string& name) { return std::string(HSLAM_SOURCE_DIR) + "/rawlog_samples/" + name; }
 
 /** Simulates config_ini/sim-<name>.ini into dir (a few seconds). */
-std::string simulated(const std::string& name, const testing::CTempDir& dir)
+std::string simulated(const std::string& name, const hslam::testing::CTempDir& dir)
 {
 	const std::string out = dir.file(name);
-	EXPECT_EQ(testing::runCommand(std::string(HSLAM_BIN_DIR) + "/hslam-simulate -q -c " + HSLAM_SOURCE_DIR +
+	EXPECT_EQ(hslam::testing::runCommand(std::string(HSLAM_BIN_DIR) + "/hslam-simulate -q -c " + HSLAM_SOURCE_DIR +
 								  "/config_ini/sim-" + name + ".ini -o " + out + " >" + out + ".log 2>&1"),
 			  0);
 	return out;
@@ -90,7 +90,7 @@ TEST(FrontEndScenarios, OdometryGapIsRecoveredByMatching)
 
 TEST(FrontEndScenarios, LongCorridorLeavesTheAxisToOdometry)
 {
-	testing::CTempDir dir;
+	hslam::testing::CTempDir dir;
 	const TScores s = runDefault(simulated("long-corridor", dir));
 	print("long corridor", s);
 	EXPECT_LT(s.ate_m, s.odometry_ate_m);
@@ -99,7 +99,7 @@ TEST(FrontEndScenarios, LongCorridorLeavesTheAxisToOdometry)
 
 TEST(FrontEndScenarios, OpenHallIsBetterThanOdometry)
 {
-	testing::CTempDir dir;
+	hslam::testing::CTempDir dir;
 	const TScores s = runDefault(simulated("open-hall", dir));
 	print("open hall", s);
 	EXPECT_LT(s.ate_m, 0.5 * s.odometry_ate_m);

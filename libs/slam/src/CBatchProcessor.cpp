@@ -5,6 +5,7 @@
 #include <hslam/eval/evaluation_json.h>
 #include <hslam/eval/evaluation_table.h>
 #include <hslam/slam/CBatchProcessor.h>
+#include <hslam/slam/loop_closure_outputs.h>
 #include <hslam/slam/mapping_config.h>
 #include <hslam/slam/pose_plots.h>
 #include <hslam/slam/run_report.h>
@@ -39,6 +40,7 @@ TBatchResult CBatchProcessor::run()
 
 	TBatchResult result;
 	readRawlog(pipeline, result);
+	pipeline.finish();  // map from the optimised graph, if any
 	result.counters = pipeline.counters();
 	result.files_written = writeMappingOutputs(pipeline, outputOptions, m_request.output_dir);
 	writeEffectiveConfig(pipeline, outputOptions);
@@ -126,6 +128,11 @@ void CBatchProcessor::printSummary(const CMappingPipeline& pipeline, const TBatc
 	m_out << "Tiles:            " << pipeline.grid().tileCount() << " (" << pipeline.grid().memoryBytes() / 1024
 		  << " KiB)\n";
 	printMatchSummary(pipeline);
+	if (pipeline.loopClosureStage())
+	{
+		printLoopClosureTiming(*pipeline.loopClosureStage(), m_out);
+		m_out << "  map re-rendered from the optimised graph: " << (pipeline.mapRerendered() ? "yes" : "no") << "\n";
+	}
 	m_out << "\nTiming per call:\n";
 	pipeline.timer().printTable(m_out);
 	m_out << "\nResults written to " << m_request.output_dir << "/ (map.png, tiles/, map.gridmap.gz, "
@@ -164,10 +171,18 @@ void CBatchProcessor::evaluate(const CMappingPipeline& pipeline, TBatchResult& r
 	eval::TEvaluationOptions options;
 	options.reference_label = m_request.ground_truth_tum;
 	options.estimate_label = m_request.output_dir + "/trajectory.tum";
-	const auto errors = eval::evaluateTrajectory(reference, pipeline.trajectory(), options);
+	const auto errors = eval::evaluateTrajectory(reference, pipeline.finalTrajectory(), options);
 	m_out << "\nEvaluation against " << m_request.ground_truth_tum << ":\n";
 	eval::printEvaluation(m_out, errors);
 	eval::writeEvaluationJson(m_request.output_dir + "/evaluation.json", errors);
+	if (pipeline.loopClosureStage())  // the online (filtered) trajectory too, for before/after
+	{
+		options.estimate_label = m_request.output_dir + "/trajectory_online.tum";
+		const auto online = eval::evaluateTrajectory(reference, pipeline.trajectory(), options);
+		m_out << "\nOnline (before the pose graph):\n";
+		eval::printEvaluation(m_out, online);
+		eval::writeEvaluationJson(m_request.output_dir + "/evaluation_online.json", online);
+	}
 	result.evaluated = true;
 	result.evaluation = errors;
 }

@@ -19,7 +19,7 @@ common::TTimedPose2D timedPose(const mrpt::obs::CObservation& obs, const mrpt::p
 std::vector<std::string> CMappingPipeline::sections()
 {
 	std::vector<std::string> s{"process", "grid", "laser_model", "pose_estimation", "dynamic_objects",
-							   "sonar_model", "tbf", "vision", "odometry_correction"};
+							   "sonar_model", "tbf", "vision", "odometry_correction", "graph", "loop_closure"};
 	for (const auto& e : CScanMatchingPoseEstimator::sections()) s.push_back(e);
 	for (const auto& e : CLocalMapPoseEstimator::sections())
 		if (std::find(s.begin(), s.end(), e) == s.end()) s.push_back(e);
@@ -35,8 +35,12 @@ CMappingPipeline::CMappingPipeline(const mrpt::config::CConfigFileBase& cfg)
 	  m_vision(cfg),
 	  m_dynamicOptions(common::loadedOptions<dynamic::CDynamicObjectFilter::TOptions>(cfg, "dynamic_objects")),
 	  m_estimator(createPoseEstimator(m_poseOptions, cfg, m_timer)),
-	  m_odometry(common::loadedOptions<calib::TOdometryCorrection>(cfg, "odometry_correction"))
+	  m_odometry(common::loadedOptions<calib::TOdometryCorrection>(cfg, "odometry_correction")),
+	  m_loopOptions(common::loadedOptions<TLoopClosureStageOptions>(cfg, "loop_closure")),
+	  m_graphOptions(common::loadedOptions<graph::TGraphBackendOptions>(cfg, "graph"))
 {
+	if (m_loopOptions.enabled)
+		m_loop = std::make_unique<CLoopClosureStage>(m_loopOptions, m_graphOptions, m_grid.geometry());
 	if (m_poseOptions.method != "map" && m_poseOptions.method != "lines+map")
 	{  // checks and records the local-map front-end's sections too (config_used.ini holds every section)
 		TPoseEstimationOptions other = m_poseOptions;
@@ -73,6 +77,8 @@ void CMappingPipeline::saveOptions(mrpt::config::CConfigFileBase& out) const
 	common::saveOptions(m_sonar.mappingOptions(), out, "sonar_model");
 	common::saveOptions(m_sonar.tbfOptions(), out, "tbf");
 	common::saveOptions(m_vision.options(), out, "vision");
+	common::saveOptions(m_graphOptions, out, "graph");
+	common::saveOptions(m_loopOptions, out, "loop_closure");
 }
 
 void CMappingPipeline::keepSensorMaps()
@@ -145,9 +151,10 @@ void CMappingPipeline::processScan(const mrpt::obs::CObservation2DRangeScan& sca
 	}
 	const common::TRangeData rangeData = common::makeRangeData(scan);  // the one projection of this scan
 	TPoseEstimate estimate;
+	std::vector<bool> onPeople;
 	{
 		common::CStageTimer::CScope t(m_timer, "pose_estimation");
-		const std::vector<bool> onPeople = peopleBeforeMatching(rangeData, increment);
+		onPeople = peopleBeforeMatching(rangeData, increment);
 		estimate = m_estimator->update(increment, rangeData, onPeople.empty() ? nullptr : &onPeople);
 	}
 	const mrpt::poses::CPose2D pose = estimate.pose;
@@ -157,6 +164,7 @@ void CMappingPipeline::processScan(const mrpt::obs::CObservation2DRangeScan& sca
 		m_laserInserter.insert(m_grid, pose, scan, excluded);
 	}
 	if (m_laserOnly) m_laserInserter.insert(*m_laserOnly, pose, scan, excluded);  // untimed: images only
+	if (m_loop) updateLoopClosure(scan, rangeData, estimate, onPeople, excluded);
 	m_lastEstimate = pose;
 	m_trajectory.push_back(timedPose(scan, pose));
 	m_odometryTrajectory.push_back(timedPose(scan, m_deadReckoningPose));
@@ -164,6 +172,47 @@ void CMappingPipeline::processScan(const mrpt::obs::CObservation2DRangeScan& sca
 	for (const auto& observer : m_estimateObservers) observer(scan, estimate);
 	estimate.lines.clear();
 	m_estimates.push_back({mrpt::Clock::toDouble(scan.timestamp), std::move(estimate)});
+}
+
+void CMappingPipeline::updateLoopClosure(const mrpt::obs::CObservation2DRangeScan& scan,
+										 const common::TRangeData& rangeData, const TPoseEstimate& estimate,
+										 const std::vector<bool>& onPeople, const std::vector<bool>* excluded)
+{
+	// Beams on people (confirmed by the filter, or predicted before matching) are not keyframe points.
+	std::vector<bool> notStatic = excluded ? *excluded : std::vector<bool>();
+	if (!onPeople.empty())
+	{
+		notStatic.resize(onPeople.size(), false);
+		for (size_t b = 0; b < onPeople.size(); ++b) notStatic[b] = notStatic[b] || onPeople[b];
+	}
+	{
+		common::CStageTimer::CScope t(m_timer, "loop_closure");
+		const auto result = m_loop->process(estimate, rangeData, notStatic.empty() ? nullptr : &notStatic);
+		if (result && result->optimized) m_timer.add("loop_closure_optimize", result->optimization.time_ms * 1e-3);
+	}
+	m_scanArchive.add(scan, excluded,
+					  m_dynamicFilter ? m_dynamicFilter->lastFrame().retro_clear_world : std::vector<mrpt::math::TPoint2D>(),
+					  estimate.pose);
+}
+
+void CMappingPipeline::finish()
+{
+	if (!m_loop || !m_loop->optimized() || !m_loopOptions.rerender_map || m_sonar.mappingOptions().enabled) return;
+	common::CStageTimer::CScope t(m_timer, "map_rerender");
+	const auto poses = m_loop->correctedScanPoses();
+	maps::CTiledOccupancyGrid fresh(m_grid.options());
+	m_scanArchive.replay(fresh, poses, m_laserInserter);
+	m_grid = std::move(fresh);
+	m_mapRerendered = true;
+}
+
+common::TTrajectory2D CMappingPipeline::finalTrajectory() const
+{
+	if (!m_loop) return m_trajectory;
+	common::TTrajectory2D out = m_trajectory;
+	const auto poses = m_loop->correctedScanPoses();
+	for (size_t i = 0; i < out.size() && i < poses.size(); ++i) out[i].pose = poses[i].asTPose();
+	return out;
 }
 
 void CMappingPipeline::processSonar(const mrpt::obs::CObservationRange& obs)

@@ -1,5 +1,6 @@
 #include <hslam/maps/grid_rendering.h>
 #include <hslam/slam/batch_outputs.h>
+#include <hslam/slam/loop_closure_outputs.h>
 #include <hslam/slam/pose_plots.h>
 #include <hslam/slam/vision_outputs.h>
 #include <mrpt/io/CFileGZOutputStream.h>
@@ -41,7 +42,7 @@ mrpt::img::CImage renderMapWithPaths(const CMappingPipeline& pipeline, const map
 	mrpt::img::CImage image = maps::renderGrid(grid, frame);
 	if (options.draw_odometry && pipeline.poseEstimatorName() != "odometry")
 		maps::drawTrajectory(image, frame, posesOf(pipeline.odometryTrajectory()), kOdometryColour);
-	maps::drawTrajectory(image, frame, posesOf(pipeline.trajectory()), kEstimateColour);
+	maps::drawTrajectory(image, frame, posesOf(pipeline.finalTrajectory()), kEstimateColour);
 	return image;
 }
 
@@ -187,7 +188,7 @@ std::vector<std::string> writeMappingOutputs(const CMappingPipeline& pipeline, c
 		saveGridmapGz(maps::toMrptGrid(grid, grid.observedBounds()), dir + "/map.gridmap.gz");
 		written.push_back(dir + "/map.gridmap.gz");
 	}
-	common::writeTumFile(dir + "/trajectory.tum", pipeline.trajectory());
+	common::writeTumFile(dir + "/trajectory.tum", pipeline.finalTrajectory());
 	common::writeTumFile(dir + "/odometry.tum", pipeline.odometryTrajectory());
 	written.push_back(dir + "/trajectory.tum");
 	written.push_back(dir + "/odometry.tum");
@@ -198,6 +199,7 @@ std::vector<std::string> writeMappingOutputs(const CMappingPipeline& pipeline, c
 	written.push_back(dir + "/pose_plot.png");
 	writeDynamicObjects(pipeline, dir, written);
 	writeVisionOutputs(pipeline.visionStage(), dir, written);
+	writeLoopClosureOutputs(pipeline, dir, written);  // after timing.txt: appends to it
 	return written;
 }
 

@@ -15,9 +15,15 @@
  * time, which the latest estimate alone would smear into the sonar arcs.
  * Across an odometry gap the pose is unknown and the reading is skipped.
  *
+ * With [loop_closure] enabled = true, every scan also goes to the
+ * loop-closure stage (CLoopClosureStage: keyframes -> pose graph -> loop
+ * closure -> optimisation) and into a compact scan archive (CScanArchive);
+ * finish() then re-inserts every scan at its corrected pose into a fresh grid
+ * if the graph was optimised (the same CLaserGridInserter path as online).
+ *
  * INI sections read (see config_ini/hslam-default.ini): [process], [grid],
- * [laser_model], [pose_estimation], [dynamic_objects], [sonar_model], [tbf];
- * unknown keys in them are errors. */
+ * [laser_model], [pose_estimation], [dynamic_objects], [sonar_model], [tbf],
+ * [graph], [loop_closure]; unknown keys in them are errors. */
 #pragma once
 
 #include <hslam/common/CStageTimer.h>
@@ -27,7 +33,9 @@
 #include <hslam/io/CRawlogReader.h>
 #include <hslam/maps/CLaserGridInserter.h>
 #include <hslam/maps/CTiledOccupancyGrid.h>
+#include <hslam/slam/CLoopClosureStage.h>
 #include <hslam/slam/COdometryTracker.h>
+#include <hslam/slam/CScanArchive.h>
 #include <hslam/slam/CPoseEstimator.h>
 #include <hslam/slam/CSonarMappingStage.h>
 #include <hslam/slam/CVisionStage.h>
@@ -75,6 +83,10 @@ class CMappingPipeline
 	explicit CMappingPipeline(const mrpt::config::CConfigFileBase& cfg);
 
 	void processEntry(const io::TRawlogEntry& entry);
+	/** End of the input: with the loop-closure stage on and the graph
+	 * optimised, rebuilds the grid from every scan at its corrected pose
+	 * (not with [sonar_model] enabled: sonar readings are not archived). */
+	void finish();
 
 	const maps::CTiledOccupancyGrid& grid() const { return m_grid; }
 	/** Also keep a sonar-only grid and, if sonar readings go into the main
@@ -87,8 +99,15 @@ class CMappingPipeline
 	const maps::CTiledOccupancyGrid* sonarOnlyMap() const { return m_sonar.sonarOnlyMap(); }
 	const CSonarMappingStage& sonarStage() const { return m_sonar; }
 	const CVisionStage& visionStage() const { return m_vision; }
-	/** Estimated robot pose at each scan. */
+	/** Estimated robot pose at each scan, online (the front-end's filtered estimate). */
 	const common::TTrajectory2D& trajectory() const { return m_trajectory; }
+	/** The run's best trajectory: corrected by the pose graph when the
+	 * loop-closure stage is on, else trajectory(). */
+	common::TTrajectory2D finalTrajectory() const;
+	/** Loop-closure stage ([loop_closure] enabled = true), else null. */
+	const CLoopClosureStage* loopClosureStage() const { return m_loop.get(); }
+	/** finish() rebuilt the grid from the optimised graph. */
+	bool mapRerendered() const { return m_mapRerendered; }
 	/** Dead-reckoning pose at each scan (same timestamps), for comparison. */
 	const common::TTrajectory2D& odometryTrajectory() const { return m_odometryTrajectory; }
 	common::CStageTimer& timer() { return m_timer; }
@@ -143,6 +162,10 @@ class CMappingPipeline
 	/** Runs the dynamic object filter; returns its per-beam mask or null. */
 	const std::vector<bool>* filterDynamicObjects(const mrpt::obs::CObservation2DRangeScan& scan,
 												  const mrpt::poses::CPose2D& pose);
+	/** Hands the scan to the loop-closure stage and the scan archive. */
+	void updateLoopClosure(const mrpt::obs::CObservation2DRangeScan& scan, const common::TRangeData& rangeData,
+						   const TPoseEstimate& estimate, const std::vector<bool>& onPeople,
+						   const std::vector<bool>* excluded);
 
 	common::CStageTimer m_timer;  // first: the estimator keeps a reference to it
 	TProcessOptions m_processOptions;
@@ -168,6 +191,11 @@ class CMappingPipeline
 	TPipelineCounters m_counters;
 	std::vector<TScanObserver> m_scanObservers;
 	std::vector<TEstimateObserver> m_estimateObservers;
+	std::unique_ptr<CLoopClosureStage> m_loop;  //!< null unless [loop_closure] enabled
+	TLoopClosureStageOptions m_loopOptions;
+	graph::TGraphBackendOptions m_graphOptions;
+	CScanArchive m_scanArchive;  //!< filled only with the loop-closure stage on
+	bool m_mapRerendered = false;
 };
 
 }  // namespace hslam::slam

@@ -2,7 +2,8 @@
  *   map.png             merged map, estimated trajectory (red) and odometry (orange)
  *   tiles/tile_X_Y.png  one image per tile (tile indices relative to the home tile)
  *   map.gridmap.gz      merged mrpt::maps::COccupancyGridMap2D (MRPT tools load it)
- *   trajectory.tum      estimated pose per scan (TUM format)
+ *   trajectory.tum      estimated pose per scan (TUM format; corrected by the
+ *                       pose graph with [loop_closure] on, see loop_closure_outputs.h)
  *   odometry.tum        dead-reckoning pose per scan (TUM format)
  *   timing.csv / .txt   per-stage time per scan: mean, p95, max
  *   pose_estimates.csv  per scan: pose, standard deviations, match method/quality/NIS

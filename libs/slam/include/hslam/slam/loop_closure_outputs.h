@@ -1,0 +1,28 @@
+/* hslam: the files of the loop-closure stage in the batch output folder
+ * (issue 13, part 5):
+ *   trajectory_online.tum  the front-end's filtered pose per scan (trajectory.tum
+ *                          then holds the pose corrected by the pose graph)
+ *   loop_closures.csv      every tested closure: keyframe ids (= scan indices),
+ *                          accepted or why not, scores, relative pose
+ *   graph.graph            the pose graph in MRPT's .graph text format
+ *                          (CNetworkOfPoses2DInf::loadFromTextFile reads it)
+ * and the back-end's timing lines appended to timing.txt.
+ * Nothing is written when the stage is off. */
+#pragma once
+
+#include <hslam/slam/CMappingPipeline.h>
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace hslam::slam
+{
+/** Human-readable back-end figures (keyframes, closures, time), one per line. */
+void printLoopClosureTiming(const CLoopClosureStage& stage, std::ostream& out);
+
+/** Writes the files above into `dir`; appends the paths to `written`. */
+void writeLoopClosureOutputs(const CMappingPipeline& pipeline, const std::string& dir,
+							 std::vector<std::string>& written);
+
+}  // namespace hslam::slam
