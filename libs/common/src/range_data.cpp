@@ -50,4 +50,25 @@ TRangeData makeRangeData(const mrpt::obs::CObservation2DRangeScan& scan)
 	return d;
 }
 
+TRangeData withoutBeams(const TRangeData& data, const std::vector<bool>& excluded)
+{
+	TRangeData d = data;
+	d.points.xy.clear(), d.points.range_m.clear(), d.points.beam.clear();
+	for (size_t b = 0; b < d.beamCount(); ++b)
+	{
+		if (b < excluded.size() && excluded[b]) d.valid[b] = false;
+		if (!d.valid[b])
+		{
+			d.beam_point[b] = TRangeData::kNoPoint;
+			continue;
+		}
+		const size_t i = data.beam_point[b];
+		d.beam_point[b] = d.points.xy.size();
+		d.points.xy.push_back(data.points.xy[i]);
+		d.points.range_m.push_back(data.points.range_m[i]);
+		d.points.beam.push_back(b);
+	}
+	return d;
+}
+
 }  // namespace hslam::common

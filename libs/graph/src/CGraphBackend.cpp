@@ -40,10 +40,14 @@ size_t CGraphBackend::addNodeAndSequentialEdge(const TKeyframe& kf)
 	}
 	const size_t prev = m_graph.nodeCount() - 1;
 	const auto rel = relativePose(m_frontendPoses.back(), kf.pose);
+	// The floor is added, not taken as a maximum of the diagonal: a covariance
+	// that is singular along a rotated direction keeps its diagonal above any
+	// floor and would give a singular information matrix.
 	Eigen::Matrix3d cov = 0.5 * (kf.relative_covariance + kf.relative_covariance.transpose());
-	cov(0, 0) = std::max(cov(0, 0), m_options.min_sequential_xy_std_m * m_options.min_sequential_xy_std_m);
-	cov(1, 1) = std::max(cov(1, 1), m_options.min_sequential_xy_std_m * m_options.min_sequential_xy_std_m);
-	cov(2, 2) = std::max(cov(2, 2), m_options.min_sequential_yaw_std_rad * m_options.min_sequential_yaw_std_rad);
+	cov += Eigen::Vector3d(m_options.min_sequential_xy_std_m * m_options.min_sequential_xy_std_m,
+						   m_options.min_sequential_xy_std_m * m_options.min_sequential_xy_std_m,
+						   m_options.min_sequential_yaw_std_rad * m_options.min_sequential_yaw_std_rad)
+			   .asDiagonal();
 	if (kf.after_gap)
 		cov += Eigen::Vector3d(m_options.weak_xy_std_m * m_options.weak_xy_std_m,
 							   m_options.weak_xy_std_m * m_options.weak_xy_std_m,

@@ -7,11 +7,15 @@ namespace hslam::slam
 {
 namespace
 {
-/** Symmetric part of m with negative eigenvalues set to zero. */
-Eigen::Matrix3d positivePart(const Eigen::Matrix3d& m)
+/** Symmetric part of m with its eigenvalues clamped to [0, max]: a filter's
+ * covariance may hold a huge variance along a direction matching could not
+ * observe (the ICP degeneracy cap, 100 m std), which says "unknown", not a
+ * relative uncertainty between keyframes, and would make the edge's
+ * information matrix numerically singular. */
+Eigen::Matrix3d positivePart(const Eigen::Matrix3d& m, double maxVariance)
 {
 	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(0.5 * (m + m.transpose()));
-	const Eigen::Vector3d values = eig.eigenvalues().cwiseMax(0.0);
+	const Eigen::Vector3d values = eig.eigenvalues().cwiseMax(0.0).cwiseMin(maxVariance);
 	return eig.eigenvectors() * values.asDiagonal() * eig.eigenvectors().transpose();
 }
 }  // namespace
@@ -38,7 +42,9 @@ Eigen::Matrix3d CLoopClosureStage::relativeCovariance(const TPoseEstimate& estim
 	Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
 	R(0, 0) = R(1, 1) = std::cos(prev.phi);
 	R(1, 0) = std::sin(prev.phi), R(0, 1) = -R(1, 0);
-	Eigen::Matrix3d cov = positivePart(R.transpose() * (estimate.covariance - m_lastKeyframeCovariance) * R);
+	const double maxVariance = 1.0;  // (1 m)^2 / (1 rad)^2: as weak as an edge across an odometry gap
+	Eigen::Matrix3d cov =
+		positivePart(R.transpose() * (estimate.covariance - m_lastKeyframeCovariance) * R, maxVariance);
 	// Floor in proportion to the motion (see file comment).
 	const auto rel = graph::relativePose(prev, estimate.pose.asTPose());
 	const double travel_m = std::hypot(rel.x, rel.y);

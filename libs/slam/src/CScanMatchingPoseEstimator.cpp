@@ -2,6 +2,7 @@
 #include <hslam/matching/scan_points.h>
 #include <hslam/slam/CScanMatchingPoseEstimator.h>
 
+#include <algorithm>
 #include <cmath>
 #include <mrpt/math/wrap2pi.h>
 
@@ -120,7 +121,7 @@ void CScanMatchingPoseEstimator::predict(const TOdometryIncrement& increment, co
 }
 
 std::optional<matching::TPoseMatch> CScanMatchingPoseEstimator::runIcp(
-	const matching::TLineScanFrame& frame, const TScanInput& scan, const std::vector<mrpt::poses::CPose2D>& seedsWorld)
+	const matching::TLineScanFrame& frame, const common::TRangeData& scan, const std::vector<mrpt::poses::CPose2D>& seedsWorld)
 {
 	if (seedsWorld.empty()) return std::nullopt;
 	common::CStageTimer::CScope t(m_timer, "icp");
@@ -147,11 +148,11 @@ std::optional<matching::TPoseMatch> CScanMatchingPoseEstimator::runIcp(
 }
 
 std::optional<matching::TPoseMatch> CScanMatchingPoseEstimator::runPointToLineIcp(
-	const TScanInput& scan, const std::vector<mrpt::poses::CPose2D>& seedsWorld)
+	const common::TRangeData& scan, const std::vector<mrpt::poses::CPose2D>& seedsWorld)
 {
 	if (m_store.empty()) return std::nullopt;
 	const matching::TOrientedPoints points =
-		matching::pointsWithNormals(scan.data.points, m_store.options(), scan.excluded);
+		matching::pointsWithNormals(scan.points, m_store.options());
 	m_localMap.update(m_store, m_store.window(seedsWorld.front()));
 	std::optional<matching::TMapMatch> best;
 	for (const auto& seed : seedsWorld)
@@ -165,12 +166,12 @@ std::optional<matching::TPoseMatch> CScanMatchingPoseEstimator::runPointToLineIc
 	return best->match;
 }
 
-void CScanMatchingPoseEstimator::addKeyframeIfDue(const matching::TLineScanFrame& frame, const TScanInput& scan)
+void CScanMatchingPoseEstimator::addKeyframeIfDue(const matching::TLineScanFrame& frame, const common::TRangeData& scan)
 {
 	const mrpt::poses::CPose2D pose = currentPose();
 	if (!usesIcp()) return;
 	if (usesPointToLine() && m_store.wantsKeyframe(pose))
-		m_store.add(scan.data.points, pose, m_ukf.covariance(), scan.data.t_s);
+		m_store.add(scan.points, pose, m_ukf.covariance(), scan.t_s);
 	if (m_options.icp_matcher != "point_to_line" && m_keyframes.wantsKeyframe(pose))
 		m_keyframes.addKeyframe(pose, frame.points);
 }
@@ -191,7 +192,7 @@ void CScanMatchingPoseEstimator::fuse(const matching::TPoseMatch& match, bool re
 	estimate.match_nis = result.nis;
 }
 
-void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, const TScanInput& scan,
+void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, const common::TRangeData& scan,
 											  TPoseEstimate& estimate)
 {
 	using matching::EMatchQuality;
@@ -234,9 +235,14 @@ void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, c
 		estimate.match_method = lineMatch->method, estimate.match_quality = EMatchQuality::failed;
 }
 
-TPoseEstimate CScanMatchingPoseEstimator::update(const TOdometryIncrement& increment, const common::TRangeData& scan,
+TPoseEstimate CScanMatchingPoseEstimator::update(const TOdometryIncrement& increment, const common::TRangeData& all,
 												 const std::vector<bool>* excludedBeams)
 {
+	// People (predicted by the dynamic filter) are left out of line extraction and ICP.
+	const bool anyExcluded = excludedBeams && std::find(excludedBeams->begin(), excludedBeams->end(), true) !=
+												  excludedBeams->end();
+	const common::TRangeData withoutPeople = anyExcluded ? common::withoutBeams(all, *excludedBeams) : common::TRangeData();
+	const common::TRangeData& scan = anyExcluded ? withoutPeople : all;
 	TPoseEstimate estimate;
 	const TMotionPrior prior = m_motion.prior(increment, scan.t_s);
 	estimate.motion_prior = prior.reason;
@@ -246,10 +252,9 @@ TPoseEstimate CScanMatchingPoseEstimator::update(const TOdometryIncrement& incre
 		m_timedMatch = dueByTime(scan.t_s);  // a timed match checks with ICP too
 		m_matchTime_s = scan.t_s;
 		matching::TLineScanFrame frame = makeFrame(scan);
-		const TScanInput input{scan, excludedBeams};
-		if (m_started) matchAndFuse(frame, input, estimate);
+		if (m_started) matchAndFuse(frame, scan, estimate);
 		m_started = true;
-		addKeyframeIfDue(frame, input);
+		addKeyframeIfDue(frame, scan);
 		estimate.lines = frame.lines;
 		m_previousFrame = std::move(frame);
 		m_ukf.cloneCurrentPose();

@@ -69,4 +69,8 @@ bool isValidReturn(const mrpt::obs::CObservation2DRangeScan& scan, size_t beam);
 /** The record of `scan` (built once per scan by the pipeline). */
 TRangeData makeRangeData(const mrpt::obs::CObservation2DRangeScan& scan);
 
+/** A copy of `data` in which the beams flagged in `excluded` (people, for
+ * the matchers) are invalid and have no point; `excluded` may be shorter. */
+TRangeData withoutBeams(const TRangeData& data, const std::vector<bool>& excluded);
+
 }  // namespace hslam::common

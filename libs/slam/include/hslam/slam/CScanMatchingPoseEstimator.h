@@ -104,24 +104,19 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	bool usesLines() const { return m_options.method != "icp"; }
 	bool usesIcp() const { return m_options.method != "lines"; }
 	bool usesPointToLine() const { return m_options.icp_matcher != "mrpt"; }
-	/** The scan being processed and the beams left out of matching (people). */
-	struct TScanInput
-	{
-		const common::TRangeData& data;
-		const std::vector<bool>* excluded;
-	};
+
 	bool dueByTime(double t_s) const;
 	bool dueForMatch(double t_s) const;
 	bool dueForIcp() const;
 	matching::TLineScanFrame makeFrame(const common::TRangeData& scan);
 	void predict(const TOdometryIncrement& increment, const TMotionPrior& prior);
-	void matchAndFuse(matching::TLineScanFrame& frame, const TScanInput& scan, TPoseEstimate& estimate);
+	void matchAndFuse(matching::TLineScanFrame& frame, const common::TRangeData& scan, TPoseEstimate& estimate);
 	/** ICP from each seed (world frame, preferred first); the best result. */
-	std::optional<matching::TPoseMatch> runIcp(const matching::TLineScanFrame& frame, const TScanInput& scan,
+	std::optional<matching::TPoseMatch> runIcp(const matching::TLineScanFrame& frame, const common::TRangeData& scan,
 												const std::vector<mrpt::poses::CPose2D>& seedsWorld);
-	std::optional<matching::TPoseMatch> runPointToLineIcp(const TScanInput& scan,
+	std::optional<matching::TPoseMatch> runPointToLineIcp(const common::TRangeData& scan,
 														   const std::vector<mrpt::poses::CPose2D>& seedsWorld);
-	void addKeyframeIfDue(const matching::TLineScanFrame& frame, const TScanInput& scan);
+	void addKeyframeIfDue(const matching::TLineScanFrame& frame, const common::TRangeData& scan);
 	void fuse(const matching::TPoseMatch& match, bool relative, fusion::CAdaptiveMeasurementNoise& noise,
 			  TPoseEstimate& estimate);
 	mrpt::poses::CPose2D currentPose() const;
