@@ -24,7 +24,7 @@ std::vector<bool> CDynamicObjectFilter::predictedDynamicBeams(const common::TRan
 		}
 	};
 	addDiscs(m_frame.person_tracks, 0.0);
-	addDiscs(m_frame.leg_tracks, 0.5 * m_options.pair_max_distance_m);
+	if (m_options.exclude_legs_from_matching) addDiscs(m_frame.leg_tracks, 0.5 * m_options.pair_max_distance_m);
 	if (discs.empty()) return mask;
 	for (size_t i = 0; i < scan.points.size(); ++i)
 		for (const auto& [c, r2] : discs)

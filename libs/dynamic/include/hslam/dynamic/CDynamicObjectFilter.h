@@ -92,7 +92,8 @@ class CDynamicObjectFilter
 	struct TOptions
 	{
 		bool enabled = true;  //!< used by the mapping pipeline (switch for comparisons)
-		bool exclude_from_matching = true;  //!< pipeline: beams on predicted dynamic tracks are not matched
+		bool exclude_from_matching = true;  //!< pipeline: beams on predicted dynamic person tracks are not matched
+		bool exclude_legs_from_matching = false;  //!< ...and those on single dynamic leg tracks
 		CLegDetector::TOptions detector;
 		CKalmanTracker::TOptions tracker;  //!< shared by leg and person tracks
 		double pair_max_distance_m = 0.6;  //!< two legs of one person (step length)
@@ -113,6 +114,7 @@ class CDynamicObjectFilter
 		{
 			v.flag("enabled", enabled);
 			v.flag("exclude_from_matching", exclude_from_matching);
+			v.flag("exclude_legs_from_matching", exclude_legs_from_matching);
 			detector.visit(v);
 			tracker.visit(v);
 			v.real("pair_max_distance_m", pair_max_distance_m, 0.0, 5.0);
