@@ -52,6 +52,19 @@ TEST(PointTranslation, RecoversAPureShiftInOneStep)
 	EXPECT_DOUBLE_EQ(r.covariance(0, 1), 0.0);
 }
 
+TEST(PointTranslation, CorridorAxisIsLeftUnconstrained)
+{
+	// Two parallel walls 2 m apart along x, 2 cm point spacing: a shift along
+	// the walls is not observable; across them it is.
+	std::vector<TPoint2D> previous;
+	for (int i = 0; i < 200; ++i) previous.push_back({0.02 * i, -1.0}), previous.push_back({0.02 * i, 1.0});
+	const auto r = estimatePointTranslation(toPointsMap(previous), moved(previous, 0.0, 0.0, 0.05), 0.0,
+											Eigen::Vector2d::Zero(), 0.5, 0.2, 3);
+	EXPECT_NEAR(r.translation_m.y(), 0.05, 1e-3);
+	EXPECT_GT(r.covariance(0, 0), 100.0);  // along the axis: the geometric cap (100 m std)
+	EXPECT_NEAR(r.covariance(1, 1), 0.05 * 0.05, 1e-6);  // across: the 5 cm floor
+}
+
 TEST(PointTranslation, UsesTheGivenRotation)
 {
 	const auto previous = grid();

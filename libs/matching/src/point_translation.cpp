@@ -17,7 +17,9 @@ namespace
  * every direction the geometry constrains. Along a direction it does not
  * constrain (a corridor's axis: every wall normal is across it) point-to-point
  * association is biased towards no motion, so the variance there comes from
- * the geometry (icp_covariance: huge), and the filter keeps odometry's value
+ * the geometry (icp_covariance: huge), and the filter keeps odometry's value.
+ * Without surfaces (fewer than 10 points on line-like neighbourhoods:
+ * isolated points, which constrain both directions) it stays isotropic
  * (issue 12, "long featureless corridor": the isotropic 5 cm made the estimate
  * lose 8 % of the travel along a 200 m simulated corridor). */
 Eigen::Matrix2d translationCovariance(const mrpt::maps::CSimplePointsMap& previousMap,
@@ -26,7 +28,10 @@ Eigen::Matrix2d translationCovariance(const mrpt::maps::CSimplePointsMap& previo
 {
 	const double floor2 = std::max(r.rms_m * r.rms_m, 0.05 * 0.05);
 	const mrpt::poses::CPose2D pose(r.translation_m.x(), r.translation_m.y(), phi);
-	const Eigen::Matrix3d geo = geometricAlignmentCovariance(previousMap, current, pose, TGeometricCovarianceOptions());
+	size_t onSurfaces = 0;
+	const Eigen::Matrix3d geo =
+		geometricAlignmentCovariance(previousMap, current, pose, TGeometricCovarianceOptions(), &onSurfaces);
+	if (onSurfaces < 10) return Eigen::Matrix2d::Identity() * floor2;  // no walls: isolated points constrain both ways
 	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(geo.topLeftCorner<2, 2>());
 	const Eigen::Vector2d variance = eig.eigenvalues().cwiseMax(floor2);
 	return eig.eigenvectors() * variance.asDiagonal() * eig.eigenvectors().transpose();
