@@ -37,7 +37,7 @@ TPoseMatch CIcpMatcher::match(const mrpt::maps::CSimplePointsMap& reference, con
 		return failed;  // too few points
 	}
 	TPoseMatch best = alignOnce(reference, current, initialGuess, initialCov);
-	if (best.score >= m_options.restart_below_goodness) return best;
+	if (best.score >= m_options.restart_below_goodness) return finished(best, reference, current);
 	const double step = std::clamp(std::sqrt(std::max(0.0, initialCov(2, 2))), m_options.restart_min_step_rad,
 								   m_options.restart_max_step_rad);
 	// Among results paired about as well as the best one (within
@@ -58,7 +58,7 @@ TPoseMatch CIcpMatcher::match(const mrpt::maps::CSimplePointsMap& reference, con
 		const double distance = d.dot(priorInfo * d);
 		if (distance < bestDistance) bestDistance = distance, best = c;
 	}
-	return best;
+	return finished(best, reference, current);
 }
 
 TPoseMatch CIcpMatcher::alignOnce(const mrpt::maps::CSimplePointsMap& reference,
@@ -79,18 +79,25 @@ TPoseMatch CIcpMatcher::alignOnce(const mrpt::maps::CSimplePointsMap& reference,
 	result.pose = gaussian.mean;
 	result.score = info.goodness;
 	result.correspondences = static_cast<size_t>(std::lround(info.goodness * current.size()));
+	for (int r = 0; r < 3; ++r)
+		for (int c = 0; c < 3; ++c) result.covariance(r, c) = gaussian.cov(r, c);
+	return result;
+}
+
+TPoseMatch CIcpMatcher::finished(TPoseMatch result, const mrpt::maps::CSimplePointsMap& reference,
+								 const mrpt::maps::CSimplePointsMap& current) const
+{
+	// The geometric covariance (kNN normals of every point) is computed once,
+	// for the chosen result, not for every restart.
 	if (m_options.covariance == "geometric")
 		result.covariance = geometricAlignmentCovariance(reference, current, result.pose, m_options.geometric);
-	else
-		for (int r = 0; r < 3; ++r)
-			for (int c = 0; c < 3; ++c) result.covariance(r, c) = gaussian.cov(r, c);
 	result.covariance(0, 0) += m_options.min_xy_std_m * m_options.min_xy_std_m;
 	result.covariance(1, 1) += m_options.min_xy_std_m * m_options.min_xy_std_m;
 	result.covariance(2, 2) += m_options.min_theta_std_rad * m_options.min_theta_std_rad;
 	if (!result.covariance.allFinite()) return result;
-	result.quality = info.goodness < m_options.fail_goodness  ? EMatchQuality::failed
-					 : info.goodness < m_options.min_goodness ? EMatchQuality::weak
-															  : EMatchQuality::good;
+	result.quality = result.score < m_options.fail_goodness  ? EMatchQuality::failed
+					 : result.score < m_options.min_goodness ? EMatchQuality::weak
+															 : EMatchQuality::good;
 	return result;
 }
 

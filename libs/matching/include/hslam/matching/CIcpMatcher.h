@@ -88,8 +88,12 @@ class CIcpMatcher
 	const TOptions& options() const { return m_options; }
 
    private:
+	/** One MRPT ICP run: pose, score and MRPT's covariance (no floors, no quality yet). */
 	TPoseMatch alignOnce(const mrpt::maps::CSimplePointsMap& reference, const mrpt::maps::CSimplePointsMap& current,
 						 const mrpt::poses::CPose2D& seed, const Eigen::Matrix3d& seedCov) const;
+	/** The chosen result's covariance (geometric or MRPT's), floors and quality. */
+	TPoseMatch finished(TPoseMatch result, const mrpt::maps::CSimplePointsMap& reference,
+						const mrpt::maps::CSimplePointsMap& current) const;
 
 	TOptions m_options;
 };
