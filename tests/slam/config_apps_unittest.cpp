@@ -78,14 +78,13 @@ TEST(ConfigApps, HslamProcessRefusesEachMalformedIni)
 	}
 }
 
-// Disabled at merge: the expected message differs from the reader's (issue 14 stays open)
-TEST(ConfigApps, DISABLED_GrabberRejectsAMisspeltMapConfigSection)
+TEST(ConfigApps, GrabberRejectsAMisspeltMapConfigSection)
 {
 	// The grabber INI is good (the Pioneer + LMS200 recording set-up); the
 	// pipeline INI of --map-config has [laser_modle]. The grabber stops
 	// before opening any device or creating the rawlog.
 	hslam::testing::CTempDir dir;
-	const auto& bad = badInis().back();
+	const TBadIni bad = badInis().back();
 	writeFile(dir.file("map.ini"), bad.bytes);
 	const int rc = run(kBin + "/hslam-grabber config_ini/grabber-pioneer-lms200.ini -o '" + dir.file("rec.rawlog") +
 						   "' --duration 1 --map-out '" + dir.file("map") + "' --map-config '" + dir.file("map.ini") + "'",
@@ -97,12 +96,11 @@ TEST(ConfigApps, DISABLED_GrabberRejectsAMisspeltMapConfigSection)
 	EXPECT_FALSE(std::filesystem::exists(dir.file("map")));
 }
 
-// Disabled at merge: fails against the merged grabber (issue 14 stays open)
-TEST(ConfigApps, DISABLED_GrabberMapConfigGoesThroughTheSameChecksAsHslamProcess)
+TEST(ConfigApps, GrabberMapConfigGoesThroughTheSameChecksAsHslamProcess)
 {
 	// A repeated key in --map-config and a binary grabber INI: both named by file and line.
 	hslam::testing::CTempDir dir;
-	const auto& repeated = badInis()[3];
+	const TBadIni repeated = badInis()[3];
 	writeFile(dir.file("map.ini"), repeated.bytes);
 	int rc = run(kBin + "/hslam-grabber config_ini/grabber-pioneer-lms200.ini -o '" + dir.file("rec.rawlog") +
 					 "' --map-out '" + dir.file("map") + "' --map-config '" + dir.file("map.ini") + "'",
@@ -110,7 +108,7 @@ TEST(ConfigApps, DISABLED_GrabberMapConfigGoesThroughTheSameChecksAsHslamProcess
 	EXPECT_EQ(rc, 1);
 	EXPECT_NE(readText(dir.file("err.txt")).find(dir.file("map.ini") + ":" + repeated.message), std::string::npos)
 		<< readText(dir.file("err.txt"));
-	const auto& binary = badInis()[0];
+	const TBadIni binary = badInis()[0];
 	writeFile(dir.file("grab.ini"), binary.bytes);
 	rc = run(kBin + "/hslam-grabber '" + dir.file("grab.ini") + "' -o '" + dir.file("rec.rawlog") + "'",
 			 dir.file("err.txt"));
@@ -120,11 +118,10 @@ TEST(ConfigApps, DISABLED_GrabberMapConfigGoesThroughTheSameChecksAsHslamProcess
 	EXPECT_FALSE(std::filesystem::exists(dir.file("rec.rawlog")));
 }
 
-// Disabled at merge: the expected message differs from the reader's (issue 14 stays open)
-TEST(ConfigApps, DISABLED_OtherAppsReadIniFilesThroughTheSameReader)
+TEST(ConfigApps, OtherAppsReadIniFilesThroughTheSameReader)
 {
 	hslam::testing::CTempDir dir;
-	const auto& bad = badInis()[1];  // key before any section
+	const TBadIni bad = badInis()[1];  // key before any section
 	writeFile(dir.file("bad.ini"), bad.bytes);
 	const std::string expected = dir.file("bad.ini") + ":" + bad.message;
 	const std::vector<std::pair<std::string, std::string>> commands{
