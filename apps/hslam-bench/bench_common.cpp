@@ -1,9 +1,13 @@
 #include "bench_common.h"
 
+#include <hslam/common/tum_trajectory.h>
+#include <hslam/maps/grid_comparison.h>
 #include <hslam/maps/grid_rendering.h>
 #include <hslam/slam/CMappingPipeline.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/img/CImage.h>
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/serialization/CArchive.h>
 
 #include <stdexcept>
 
@@ -75,6 +79,31 @@ void saveExclusionComparison(const maps::CTiledOccupancyGrid& without, const map
 	both.textOut(5, 5, "without exclusion", mrpt::img::TColor(200, 0, 0));
 	both.textOut(static_cast<int>(a.getWidth()) + 15, 5, "with exclusion", mrpt::img::TColor(0, 130, 0));
 	if (!both.saveToFile(pngPath)) throw std::runtime_error(pngPath + ": cannot write");
+}
+
+mrpt::maps::COccupancyGridMap2D loadGridmap(const std::string& path)
+{
+	mrpt::maps::COccupancyGridMap2D grid;
+	mrpt::io::CFileGZInputStream in(path);
+	mrpt::serialization::archiveFrom(in) >> grid;
+	return grid;
+}
+
+mrpt::poses::CPose2D ourMapFrameInTruth(const std::string& sampleDir, const slam::CMappingPipeline& pipeline)
+{
+	const auto truthTrajectory = common::readTumFile(sampleDir + "/ground_truth.tum");
+	const auto& ours0 = pipeline.trajectory().front().pose;
+	const auto& true0 = truthTrajectory.front().pose;
+	mrpt::poses::CPose2D oursInTruth(ours0.x, ours0.y, ours0.phi);
+	oursInTruth.inverse();
+	return mrpt::poses::CPose2D(true0.x, true0.y, true0.phi) + oursInTruth;
+}
+
+mrpt::maps::COccupancyGridMap2D truthMapOnOurCells(const std::string& sampleDir, const slam::CMappingPipeline& pipeline,
+												   const maps::TCellBounds& cells)
+{
+	return maps::resampleOntoOurCells(loadGridmap(sampleDir + "/gt_map.gridmap.gz"), pipeline.grid().geometry(), cells,
+									  ourMapFrameInTruth(sampleDir, pipeline));
 }
 
 }  // namespace hslam::bench

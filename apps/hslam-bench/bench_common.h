@@ -4,6 +4,7 @@
 #include <hslam/maps/CLaserGridInserter.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <hslam/dynamic/CDynamicObjectFilter.h>
+#include <hslam/slam/CMappingPipeline.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
 
@@ -74,6 +75,20 @@ int runLinesSuite(const std::vector<std::string>& logs, int repetitions);
  * ../shared/datasets/legs (bench_legs.cpp); images go to outDir. */
 int runLegsSuite(const std::string& dataDir, const std::string& outDir, const std::string& configFile);
 
+
+/** An MRPT grid map file (.gridmap.gz, e.g. a simulator's gt_map). */
+mrpt::maps::COccupancyGridMap2D loadGridmap(const std::string& path);
+/** Our map frame in the simulated truth's frame (placed by the first true pose). */
+mrpt::poses::CPose2D ourMapFrameInTruth(const std::string& sampleDir, const slam::CMappingPipeline& pipeline);
+/** The ground-truth map of a simulated sample folder (gt_map.gridmap.gz,
+ * ground_truth.tum) resampled onto `cells` of the pipeline's grid, the map
+ * frame placed on the truth with the first true pose. */
+mrpt::maps::COccupancyGridMap2D truthMapOnOurCells(const std::string& sampleDir, const slam::CMappingPipeline& pipeline,
+												   const maps::TCellBounds& cells);
+/** Map quality against a reference for several grid ranges ([laser_model]
+ * max_range_m; bench_grid_range.cpp). */
+int runGridRangeSuite(const std::string& samplesDir, const std::vector<std::string>& rawlogs,
+					  const std::vector<std::string>& references);
 
 /** Every 2D scan of a rawlog (either format), in file order. */
 std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> readScans(const std::string& rawlogPath);

@@ -75,14 +75,6 @@ double stageMean(const common::CStageTimer& timer, const std::string& stage, dou
 	return 0;
 }
 
-mrpt::maps::COccupancyGridMap2D loadGridmap(const std::string& path)
-{
-	mrpt::maps::COccupancyGridMap2D grid;
-	mrpt::io::CFileGZInputStream in(path);
-	mrpt::serialization::archiveFrom(in) >> grid;
-	return grid;
-}
-
 struct TTotals
 {
 	size_t laserAgreed = 0, laserCompared = 0, fusedAgreed = 0, fusedCompared = 0, laserKnown = 0, fusedKnown = 0;
@@ -143,15 +135,8 @@ int runSonarBatchSuite(const std::string& dataDir)
 			cells.include(r.pipeline->grid().observedBounds());
 			runs.push_back(std::move(r));
 		}
-		const auto truthTrajectory = common::readTumFile(dir + "/ground_truth.tum");
-		const auto& ours0 = runs[0].pipeline->trajectory().front().pose;
-		const auto& true0 = truthTrajectory.front().pose;
-		mrpt::poses::CPose2D oursInTruth(ours0.x, ours0.y, ours0.phi);
-		oursInTruth.inverse();
-		oursInTruth = mrpt::poses::CPose2D(true0.x, true0.y, true0.phi) + oursInTruth;
-		const auto& geometry = runs[0].pipeline->grid().geometry();
-		const auto truthGrid = maps::resampleOntoOurCells(loadGridmap(dir + "/gt_map.gridmap.gz"), geometry, cells,
-														   oursInTruth);
+		const auto truthGrid = truthMapOnOurCells(dir, *runs[0].pipeline, cells);
+		const mrpt::poses::CPose2D oursInTruth = ourMapFrameInTruth(dir, *runs[0].pipeline);
 		for (const auto& r : runs)
 		{
 			const auto a = maps::compareWithMrptGrid(r.pipeline->grid(), truthGrid);

@@ -20,18 +20,20 @@
 
 int main(int argc, char** argv)
 {
-	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers)", ' ', hslam::common::versionText());
-	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers",
+	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, grid-range, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers)", ' ', hslam::common::versionText());
+	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid, grid-range, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers",
 												true, "", "suite", cmd);
 	TCLAP::MultiArg<std::string> rawlogs("r", "rawlog",
 										 "rawlog(s) with laser scans and odometry (default: MRPT's sample rawlog)",
 										 false, "file", cmd);
 	TCLAP::ValueArg<int> repetitions("n", "repetitions", "timed runs per measurement, best kept (default 5)", false,
 									 5, "N", cmd);
-	TCLAP::ValueArg<std::string> data("", "data", "legs: folder laid out like ../shared/datasets/legs; legs-sim: folder of simulated samples (default: ../shared/datasets/legs)", false,
+	TCLAP::ValueArg<std::string> data("", "data", "legs: folder laid out like ../shared/datasets/legs; legs-sim, sonar-batch, grid-range: folder of simulated samples (default: ../shared/datasets/legs, rawlog_samples)", false,
 									  "../shared/datasets/legs", "dir", cmd);
 	TCLAP::ValueArg<std::string> out("", "out", "folder for images written by a suite (default .)", false, ".",
 									 "dir", cmd);
+	TCLAP::MultiArg<std::string> references("g", "ground-truth", "grid-range: reference trajectory (TUM) of each -r rawlog, in order",
+											 false, "file", cmd);
 	TCLAP::ValueArg<std::string> config("c", "config", "legs suites: INI whose [dynamic_objects] overrides the suite's options (default: none)",
 										false, "", "file", cmd);
 	try
@@ -39,6 +41,9 @@ int main(int argc, char** argv)
 		if (argc > 1 && std::string(argv[1]) == "pipeline") return hslam::bench::runPipelineSuite(argc, argv);
 		if (!cmd.parse(argc, argv)) return 0;  // --help or --version was printed
 		if (suite.getValue() == "lines") return hslam::bench::runLinesSuite(rawlogs.getValue(), std::max(1, repetitions.getValue()));
+		if (suite.getValue() == "grid-range")
+			return hslam::bench::runGridRangeSuite(data.isSet() ? data.getValue() : "rawlog_samples", rawlogs.getValue(),
+												   references.getValue());
 		std::vector<std::string> inputs = rawlogs.getValue();
 		if (inputs.empty()) inputs.push_back(hslam::bench::kMrptSampleRawlog);
 		if (suite.getValue() == "grid") return hslam::bench::runGridSuite(inputs, std::max(1, repetitions.getValue()));
@@ -51,7 +56,7 @@ int main(int argc, char** argv)
 												 config.getValue());
 		if (suite.getValue() == "hwdrivers") return hslam::bench::runHwdriversSuite(std::max(1, repetitions.getValue()));
 		std::cerr << "hslam-bench: unknown suite '" << suite.getValue()
-				  << "' (available: grid, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers)\n";
+				  << "' (available: grid, grid-range, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers)\n";
 		return 1;
 	}
 	catch (const TCLAP::ArgException& e)
