@@ -131,12 +131,14 @@ std::optional<matching::TPoseMatch> CScanMatchingPoseEstimator::runIcp(
 	std::optional<matching::TPoseMatch> best;
 	for (const auto& seed : seedsWorld)
 	{
+		// A later seed must pair clearly more points to replace an earlier
+		// one: once that is impossible, it is not run.
+		if (best && best->score + m_icp.options().restart_goodness_tolerance >= 1.0) break;
 		// Without an informative prediction (gap, frozen or stalled odometry),
 		// or to check odometry's claim that the robot stands still (a timed
 		// match), a weakly constrained direction is better measured than not.
 		const matching::CIcpMatcher& icp = m_gapSinceMatch || m_timedMatch ? m_icpWithoutPrior : m_icp;
 		auto m = icp.match(reference, frame.pointsMap, seed, m_ukf.covariance());
-		// a later seed must pair clearly more points to replace an earlier one
 		if (!best || m.score > best->score + m_icp.options().restart_goodness_tolerance) best = std::move(m);
 	}
 	if (usesPointToLine() && best && best->quality != matching::EMatchQuality::failed)
