@@ -76,6 +76,12 @@ std::string readFile(const std::string& p)
 	return ss.str();
 }
 
+/** A UDP teleop port for test `k`: below Linux's ephemeral range
+ * (32768-60999), where the sockets of tests running in parallel are given
+ * their local ports and could hold it; per process, so that two runs of the
+ * suite do not meet either. */
+int teleopPort(int k) { return 21000 + 1500 * k + static_cast<int>(getpid() % 1500); }
+
 /** The shipped INI with the emulator's devices and a UDP teleop port. */
 std::string writeIni(const hslam::testing::CTempDir& tmp, int udpPort, bool sensoryFrames)
 {
@@ -279,7 +285,7 @@ std::string findRawlog(const hslam::testing::CTempDir& tmp)
 TEST(RecordingIntegration, MrptRawlogGrabberWithOurPlugin)
 {
 	hslam::testing::CTempDir tmp;
-	const int port = 47100 + static_cast<int>(getpid() % 500);
+	const int port = teleopPort(0);
 	const std::string ini = writeIni(tmp, port, false);
 	const TWorldSetup world = boxRoom();
 	auto emu = startEmulators(tmp, world);
@@ -302,7 +308,7 @@ TEST(RecordingIntegration, MrptRawlogGrabberWithOurPlugin)
 TEST(RecordingIntegration, HslamGrabberRecordsEverythingUntilTheStop)
 {
 	hslam::testing::CTempDir tmp;
-	const int port = 47600 + static_cast<int>(getpid() % 500);
+	const int port = teleopPort(1);
 	const std::string ini = writeIni(tmp, port, false);
 	const TWorldSetup world = labScene();  // the simulator's world
 	auto emu = startEmulators(tmp, world);
@@ -392,7 +398,7 @@ TEST(RecordingIntegration, SimulatorModelsDriveTheEmulatedRobot)
 	// --sim-ini: the simulator's P3-DX kinematics with UMBmark errors and wheel
 	// noise, its sonar model (30 deg cone, specular/multipath) and laser noise.
 	hslam::testing::CTempDir tmp;
-	const int port = 48100 + static_cast<int>(getpid() % 500);
+	const int port = teleopPort(2);
 	const std::string ini = writeIni(tmp, port, false);
 	TWorldSetup world = labScene();
 	world.emulatorArgs.push_back("--sim-ini");
