@@ -99,6 +99,111 @@ void printRow(const std::string& sample, const std::string& name, const maps::TC
 			  << std::setprecision(3) << a.occupiedFound() << std::setw(10) << std::setprecision(4) << msPerRing
 			  << "\n";
 }
+
+/** Every run of kRuns on one sample's rawlog; `cells` gets the union of their observed areas. */
+std::vector<TRunResult> runConfigs(const std::string& ini, const std::string& dir, maps::TCellBounds& cells)
+{
+	std::vector<io::TRawlogEntry> entries;
+	{
+		io::CRawlogReader reader(dir + "/sim.rawlog");
+		for (io::TRawlogEntry e; reader.next(e);) entries.push_back(e);
+	}
+	std::vector<TRunResult> runs;
+	for (const auto& config : kRuns)
+	{
+		auto overrides = config.overrides;
+		overrides.push_back("tbf.min_support=1");
+		TRunResult r;
+		r.name = config.name;
+		r.pipeline = std::make_unique<slam::CMappingPipeline>(common::loadConfigWithOverrides(ini, overrides));
+		if (&config == &kRuns[1]) r.pipeline->keepSensorMaps();
+		const auto t0 = std::chrono::steady_clock::now();
+		for (const auto& e : entries) r.pipeline->processEntry(e);
+		r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+		cells.include(r.pipeline->grid().observedBounds());
+		runs.push_back(std::move(r));
+	}
+	return runs;
+}
+
+/** One table row per map of the sample against the truth; the laser-only and fused runs count into `totals`. */
+void printMapRows(const std::string& sample, const std::vector<TRunResult>& runs,
+				  const mrpt::maps::COccupancyGridMap2D& truthGrid, TTotals& totals)
+{
+	for (const auto& r : runs)
+	{
+		const auto a = maps::compareWithMrptGrid(r.pipeline->grid(), truthGrid);
+		printRow(sample, r.name, a, stageMean(r.pipeline->timer(), "sonar_update"));
+		if (&r == &runs[0])
+			totals.laserAgreed += a.agreed, totals.laserCompared += a.compared, totals.laserKnown += a.ours_known;
+		if (&r == &runs[1])
+			totals.fusedAgreed += a.agreed, totals.fusedCompared += a.compared, totals.fusedKnown += a.ours_known;
+	}
+	printRow(sample, "sonar only (fast, w=1)", maps::compareWithMrptGrid(*runs[1].pipeline->sonarOnlyMap(), truthGrid),
+			 0.0);
+}
+
+/** TBF corners of the fused run against the true point features: the wall
+ * corners (corners.csv) and the static circles of the scene (pillars, chair
+ * and table legs), which reflect sonar like edges and are what TBF finds
+ * most in these worlds. Rows go to `table`. */
+void scoreTbfCorners(const std::string& sample, const std::string& dir, const slam::CMappingPipeline& fused,
+					 const mrpt::poses::CPose2D& oursInTruth, std::ostream& table, TTotals& totals)
+{
+	const auto wallCorners = eval::readPointsCsv(dir + "/corners.csv");
+	std::vector<mrpt::math::TPoint2D> circles;
+	std::vector<double> circleRadii;
+	for (const auto& c : staticCircles(sample)) circles.push_back(c.centre), circleRadii.push_back(c.radius_m);
+	auto allPoints = wallCorners;
+	allPoints.insert(allPoints.end(), circles.begin(), circles.end());
+	std::vector<double> allRadii(wallCorners.size(), 0.0);
+	allRadii.insert(allRadii.end(), circleRadii.begin(), circleRadii.end());
+	const int minSupport = slam::TTbfStageOptions().min_support;
+	for (const int support : {1, minSupport})
+	{
+		std::vector<mrpt::math::TPoint2D> found;
+		for (const auto& c : fused.sonarStage().corners())
+			if (c.support >= support) found.push_back(c.point);
+		const auto s2 = eval::scorePointLandmarks(found, allPoints, 0.2, oursInTruth, allRadii);
+		const auto s3 = eval::scorePointLandmarks(found, allPoints, 0.3, oursInTruth, allRadii);
+		const auto w3 = eval::scorePointLandmarks(found, wallCorners, 0.3, oursInTruth);
+		const auto c3 = eval::scorePointLandmarks(found, circles, 0.3, oursInTruth, circleRadii);
+		table << std::left << std::setw(10) << sample << std::right << std::setw(8) << support << std::setw(9)
+			  << found.size() << std::setw(7) << wallCorners.size() << std::setw(9) << circles.size() << std::fixed
+			  << std::setprecision(3) << std::setw(10) << s2.precision() << std::setw(10) << s3.precision()
+			  << std::setw(11) << w3.recall() << std::setw(11) << c3.recall() << "\n";
+		if (support == minSupport) totals.cornersFound += s3.found, totals.cornersNear += s3.found_near_truth;
+	}
+}
+
+/** The cost row of the sample: the sensor maps repeat the laser grid update
+ * and the sonar update on their own grids (untimed), so their cost is about
+ * the timed totals. */
+void printCostRow(const std::string& sample, const std::vector<TRunResult>& runs, std::ostream& table)
+{
+	const auto& fused = *runs[1].pipeline;
+	double gridTotal = 0, sonarTotal = 0, tbfTotal = 0;
+	stageMean(fused.timer(), "grid_update", &gridTotal);
+	const double sonarMean = stageMean(fused.timer(), "sonar_update", &sonarTotal);
+	const double tbfMean = stageMean(fused.timer(), "sonar_corners", &tbfTotal);
+	const double jobMs = 1e3 * runs[1].seconds;
+	table << std::left << std::setw(10) << sample << std::right << std::fixed << std::setprecision(2) << std::setw(12)
+		  << runs[0].seconds << std::setw(12) << runs[1].seconds << std::setw(8) << fused.counters().sonar_observations
+		  << std::setprecision(4) << std::setw(11) << sonarMean << std::setw(11) << tbfMean << std::setprecision(1)
+		  << std::setw(10) << 100.0 * (sonarTotal + tbfTotal) / jobMs << std::setw(10)
+		  << 100.0 * (gridTotal + sonarTotal) / jobMs << "\n";
+}
+
+void printTotals(const TTotals& totals)
+{
+	std::cout << "\nsonar_batch_laser_only_agreement=" << static_cast<double>(totals.laserAgreed) / totals.laserCompared
+			  << "\nsonar_batch_fused_agreement=" << static_cast<double>(totals.fusedAgreed) / totals.fusedCompared
+			  << "\nsonar_batch_laser_only_known_agreement=" << static_cast<double>(totals.laserAgreed) / totals.laserKnown
+			  << "\nsonar_batch_fused_known_agreement=" << static_cast<double>(totals.fusedAgreed) / totals.fusedKnown
+			  << "\nsonar_batch_tbf_precision_0_3m="
+			  << (totals.cornersFound ? static_cast<double>(totals.cornersNear) / totals.cornersFound : 0.0)
+			  << "\n";
+}
 }  // namespace
 
 int runSonarBatchSuite(const std::string& dataDir)
@@ -114,82 +219,11 @@ int runSonarBatchSuite(const std::string& dataDir)
 	for (const std::string sample : {"lab", "corridor", "umbmark", "floor"})
 	{
 		const std::string dir = dataDir + "/" + sample;
-		std::vector<io::TRawlogEntry> entries;
-		{
-			io::CRawlogReader reader(dir + "/sim.rawlog");
-			for (io::TRawlogEntry e; reader.next(e);) entries.push_back(e);
-		}
-		std::vector<TRunResult> runs;
 		maps::TCellBounds cells;
-		for (const auto& config : kRuns)
-		{
-			auto overrides = config.overrides;
-			overrides.push_back("tbf.min_support=1");
-			TRunResult r;
-			r.name = config.name;
-			r.pipeline = std::make_unique<slam::CMappingPipeline>(common::loadConfigWithOverrides(ini, overrides));
-			if (&config == &kRuns[1]) r.pipeline->keepSensorMaps();
-			const auto t0 = std::chrono::steady_clock::now();
-			for (const auto& e : entries) r.pipeline->processEntry(e);
-			r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-			cells.include(r.pipeline->grid().observedBounds());
-			runs.push_back(std::move(r));
-		}
-		const auto truthGrid = truthMapOnOurCells(dir, *runs[0].pipeline, cells);
-		const mrpt::poses::CPose2D oursInTruth = ourMapFrameInTruth(dir, *runs[0].pipeline);
-		for (const auto& r : runs)
-		{
-			const auto a = maps::compareWithMrptGrid(r.pipeline->grid(), truthGrid);
-			printRow(sample, r.name, a, stageMean(r.pipeline->timer(), "sonar_update"));
-			if (&r == &runs[0])
-				totals.laserAgreed += a.agreed, totals.laserCompared += a.compared, totals.laserKnown += a.ours_known;
-			if (&r == &runs[1])
-				totals.fusedAgreed += a.agreed, totals.fusedCompared += a.compared, totals.fusedKnown += a.ours_known;
-		}
-		const auto& fused = *runs[1].pipeline;
-		printRow(sample, "sonar only (fast, w=1)", maps::compareWithMrptGrid(*fused.sonarOnlyMap(), truthGrid), 0.0);
-
-		// True point features: the wall corners (corners.csv) and the static
-		// circles of the scene (pillars, chair and table legs), which reflect
-		// sonar like edges and are what TBF finds most in these worlds.
-		const auto wallCorners = eval::readPointsCsv(dir + "/corners.csv");
-		std::vector<mrpt::math::TPoint2D> circles;
-		std::vector<double> circleRadii;
-		for (const auto& c : staticCircles(sample)) circles.push_back(c.centre), circleRadii.push_back(c.radius_m);
-		auto allPoints = wallCorners;
-		allPoints.insert(allPoints.end(), circles.begin(), circles.end());
-		std::vector<double> allRadii(wallCorners.size(), 0.0);
-		allRadii.insert(allRadii.end(), circleRadii.begin(), circleRadii.end());
-		const int minSupport = slam::TTbfStageOptions().min_support;
-		for (const int support : {1, minSupport})
-		{
-			std::vector<mrpt::math::TPoint2D> found;
-			for (const auto& c : fused.sonarStage().corners())
-				if (c.support >= support) found.push_back(c.point);
-			const auto s2 = eval::scorePointLandmarks(found, allPoints, 0.2, oursInTruth, allRadii);
-			const auto s3 = eval::scorePointLandmarks(found, allPoints, 0.3, oursInTruth, allRadii);
-			const auto w3 = eval::scorePointLandmarks(found, wallCorners, 0.3, oursInTruth);
-			const auto c3 = eval::scorePointLandmarks(found, circles, 0.3, oursInTruth, circleRadii);
-			tbfTable << std::left << std::setw(10) << sample << std::right << std::setw(8) << support << std::setw(9)
-					 << found.size() << std::setw(7) << wallCorners.size() << std::setw(9) << circles.size()
-					 << std::fixed << std::setprecision(3) << std::setw(10) << s2.precision() << std::setw(10)
-					 << s3.precision() << std::setw(11) << w3.recall() << std::setw(11) << c3.recall() << "\n";
-			if (support == minSupport)
-				totals.cornersFound += s3.found, totals.cornersNear += s3.found_near_truth;
-		}
-		// The sensor maps repeat the laser grid update and the sonar update
-		// on their own grids (untimed): their cost is about the timed totals.
-		double gridTotal = 0, sonarTotal = 0, tbfTotal = 0;
-		stageMean(fused.timer(), "grid_update", &gridTotal);
-		const double sonarMean = stageMean(fused.timer(), "sonar_update", &sonarTotal);
-		const double tbfMean = stageMean(fused.timer(), "sonar_corners", &tbfTotal);
-		const double jobMs = 1e3 * runs[1].seconds;
-		costTable << std::left << std::setw(10) << sample << std::right << std::fixed << std::setprecision(2)
-				  << std::setw(12) << runs[0].seconds << std::setw(12) << runs[1].seconds << std::setw(8)
-				  << fused.counters().sonar_observations << std::setprecision(4) << std::setw(11) << sonarMean
-				  << std::setw(11) << tbfMean << std::setprecision(1) << std::setw(10)
-				  << 100.0 * (sonarTotal + tbfTotal) / jobMs << std::setw(10) << 100.0 * (gridTotal + sonarTotal) / jobMs
-				  << "\n";
+		const std::vector<TRunResult> runs = runConfigs(ini, dir, cells);
+		printMapRows(sample, runs, truthMapOnOurCells(dir, *runs[0].pipeline, cells), totals);
+		scoreTbfCorners(sample, dir, *runs[1].pipeline, ourMapFrameInTruth(dir, *runs[0].pipeline), tbfTable, totals);
+		printCostRow(sample, runs, costTable);
 	}
 	std::cout << "   agreement over the union of the observed areas of all maps; walls = truth-occupied cells found\n"
 			  << "\nTBF corners vs true point features: wall corners (corners.csv) + static circles (scene)\n"
@@ -198,13 +232,7 @@ int runSonarBatchSuite(const std::string& dataDir)
 			  << "\nCost in the job (laser+sonar fast w=0.1 run, with the sensor maps kept)\n"
 			  << "sample     laser-only s  fused s   rings  update ms  tbf ms/ring  sonar %  sensor maps %\n"
 			  << costTable.str();
-	std::cout << "\nsonar_batch_laser_only_agreement=" << static_cast<double>(totals.laserAgreed) / totals.laserCompared
-			  << "\nsonar_batch_fused_agreement=" << static_cast<double>(totals.fusedAgreed) / totals.fusedCompared
-			  << "\nsonar_batch_laser_only_known_agreement=" << static_cast<double>(totals.laserAgreed) / totals.laserKnown
-			  << "\nsonar_batch_fused_known_agreement=" << static_cast<double>(totals.fusedAgreed) / totals.fusedKnown
-			  << "\nsonar_batch_tbf_precision_0_3m="
-			  << (totals.cornersFound ? static_cast<double>(totals.cornersNear) / totals.cornersFound : 0.0)
-			  << "\n";
+	printTotals(totals);
 	return 0;
 }
 
