@@ -26,10 +26,14 @@ bin="$root/usr/bin" lib="$root/usr/lib"
 [ -f "$root/usr/share/hslam/config_ini/hslam-default.ini" ] || fail "default INI not installed"
 [ -f "$root/usr/share/man/man1/hslam-process.1.gz" ] || [ -f "$root/usr/share/man/man1/hslam-process.1" ] ||
   fail "no man page for hslam-process"
-"$bin/hslam-process" --help | grep -q -- "--ground-truth" || fail "hslam-process --help"
-"$bin/hslam-process" --version | grep -q "$version (built against MRPT 2\.5" || fail "hslam-process --version"
+# (captured first: grep -q closing the pipe early would fail the pipeline under pipefail)
+help=$("$bin/hslam-process" --help) || fail "hslam-process --help exited non-zero"
+grep -q -- "--ground-truth" <<<"$help" || fail "hslam-process --help lacks --ground-truth"
+ver=$("$bin/hslam-process" --version) || fail "hslam-process --version exited non-zero"
+grep -q "$version (built against MRPT 2\.5" <<<"$ver" || fail "hslam-process --version: $ver"
 # The unpacked app must not use the build tree: its libraries come from the root.
-ldd "$bin/hslam-process" | grep libhslam- | grep -qv "$root" && fail "hslam-process uses libraries outside $root"
+outside=$(ldd "$bin/hslam-process" | grep libhslam- | grep -v "$root" || true)
+[ -z "$outside" ] || fail "hslam-process uses libraries outside $root: $outside"
 
 # MRPT's rawlog-grabber without the plug-in does not know our sensor ...
 ini="$work/grab.ini"
@@ -39,6 +43,8 @@ awk '/^\[LASER\]/{skip=1} /^\[/{if ($0 != "[LASER]") skip=0} !skip' \
       -e "s|^GRABBER_PERIOD_MS = .*|GRABBER_PERIOD_MS = 200|" > "$ini"
 (echo q | timeout 60 rawlog-grabber "$ini" > "$work/noplugin.log" 2>&1) || true
 grep -qiE "not recognized|unknown" "$work/noplugin.log" || { cat "$work/noplugin.log"; fail "no unknown-class error without the plug-in"; }
+# That run left an empty rec_<time>.rawlog; the recording checked below is the next one.
+rm -f "$work"/rec_*.rawlog
 # ... and records our unpacked emulator with it.
 "$bin/hslam-device-emulator" --pioneer-pty "$work/pioneer" --duration 15 > "$work/emulator.log" 2>&1 &
 emulator=$!

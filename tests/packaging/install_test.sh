@@ -17,8 +17,8 @@ for f in bin/hslam-process bin/hslam-carmen2rawlog bin/hslam-evaluate \
   [ -e "$prefix/$f" ] || fail "not installed: $prefix/$f"
 done
 if command -v help2man > /dev/null; then [ -s "$prefix/share/man/man1/hslam-process.1" ] || fail "no man page"; fi
-readelf -d "$prefix/bin/hslam-process" | grep -q 'R.*PATH.*\$ORIGIN/../lib' || fail "hslam-process RUNPATH"
-readelf -d "$prefix/lib/libhslam-hwdrivers-plugin.so" | grep -q 'R.*PATH.*\$ORIGIN' || fail "plug-in RUNPATH"
+grep -q 'R.*PATH.*\$ORIGIN/../lib' <<<"$(readelf -d "$prefix/bin/hslam-process")" || fail "hslam-process RUNPATH"
+grep -q 'R.*PATH.*\$ORIGIN' <<<"$(readelf -d "$prefix/lib/libhslam-hwdrivers-plugin.so")" || fail "plug-in RUNPATH"
 ldd "$prefix/bin/hslam-process" | grep 'libhslam-' | grep -v "$prefix/bin/../lib" && fail "libraries outside the prefix"
 echo "installed $(find "$prefix" -type f | wc -l) files into $prefix"
 echo "PASS"
