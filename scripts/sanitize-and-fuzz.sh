@@ -13,14 +13,16 @@ build=build-sanitize
 jobs=$(nproc)
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -g0" \
   -DCMAKE_CXX_COMPILER=clang++-14 -DHSLAM_FUZZ=ON -DHSLAM_BUILD_BENCHMARKS=OFF >/dev/null
-targets=(test_common test_io test_eval fuzz_replay
+# hslam-carmen2rawlog and hslam-evaluate: the bad-input tests of io / eval run
+# them, so the apps' own input handling is checked under the sanitizers too.
+targets=(test_common test_io test_eval hslam-carmen2rawlog hslam-evaluate fuzz_replay
          fuzz_carmen_line fuzz_ini_options fuzz_arcos_packets fuzz_rawlog_reader fuzz_tiled_map fuzz_tum_reader)
 cmake --build "$build" -j"$jobs" --target "${targets[@]}"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=0
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # The real-data CARMEN tests convert whole Radish logs (minutes under ASan;
 # their code paths are the ones the small tests cover); the *App tests run
-# app binaries that this build does not make.
+# app binaries (hslam-process ...) that this build does not make.
 status=0
 total=0
 for t in test_common test_io test_eval; do

@@ -102,6 +102,11 @@ int runLegsSimSuite(const std::string& dataDir, const std::string& outDir, const
  * scan and ATE (bench_pipeline.cpp); parses its own options from argv. */
 int runPipelineSuite(int argc, char** argv);
 
+/** Pose-graph optimisation against graph size (synthetic laps up to 10 000
+ * keyframes) and the loop-closure back-end's cost in hslam-process
+ * (bench_graph.cpp); parses its own options from argv. */
+int runGraphSuite(int argc, char** argv);
+
 /** ARCOS parser, driver and recorders against the emulators (bench_hwdrivers.cpp). */
 int runHwdriversSuite(int repetitions);
 

@@ -18,6 +18,7 @@
  * mapped to the scans' timestamps by reading the rawlog step by step with
  * the same MRPT call icp-slam uses. Runs and trajectories stay in --out. */
 #include "bench_common.h"
+#include "child_process.h"
 
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/eval/evaluate_trajectory.h>
@@ -27,7 +28,6 @@
 #include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/obs/CRawlog.h>
 #include <mrpt/serialization/CArchive.h>
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -66,29 +66,6 @@ struct TBenchRow
 	std::optional<double> ate_odometry_m, ate_ours_m, ate_icp_m;
 	std::string icp_note;
 };
-
-std::string shellQuote(const std::string& s)
-{
-	std::string q = "'";
-	for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-	return q + "'";
-}
-
-/** Runs `command` (output to `logFile`) and returns the CPU time of the
- * child processes; throws naming the command and log on failure. */
-double childCpuSeconds(const std::string& command, const std::string& logFile)
-{
-	const auto cpu = [] {
-		rusage u{};
-		getrusage(RUSAGE_CHILDREN, &u);
-		return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-	};
-	const double before = cpu();
-	const int status = std::system((command + " </dev/null >" + shellQuote(logFile) + " 2>&1").c_str());
-	if (status != 0) throw std::runtime_error("command failed (status " + std::to_string(status) + "): " + command +
-											  " (see " + logFile + ")");
-	return cpu() - before;
-}
 
 /** A short name: the folder for <dir>/sim.rawlog, else the file stem. */
 std::string rawlogName(const std::string& path)

@@ -13,6 +13,7 @@
 #include "batch_test_utils.h"
 
 #include <gtest/gtest.h>
+#include <mrpt/img/CImage.h>
 #include <hslam/common/config_overrides.h>
 #include <hslam/common/options_io.h>
 #include <hslam/common/tum_trajectory.h>
@@ -135,8 +136,23 @@ TEST(LoopClosureStage, BatchWritesItsFilesAndMrptReadsTheGraph)
 		sample("lab") + "/sim.rawlog", out,
 		{"process.laser_label=LASER", "loop_closure.enabled=true", "output.write_tiles=false"});
 	for (const char* f : {"trajectory.tum", "trajectory_online.tum", "loop_closures.csv", "graph.graph", "map.png",
-						  "map.gridmap.gz", "timing.txt", "config_used.ini"})
+						  "map_loop_closures.png", "map.gridmap.gz", "timing.txt", "config_used.ini"})
 		EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << f;
+	// The closures picture is map.png plus the closures: accepted ones in green.
+	const auto greenPixels = [](const std::string& path) {
+		mrpt::img::CImage image;
+		EXPECT_TRUE(image.loadFromFile(path)) << path;
+		size_t n = 0;
+		for (unsigned r = 0; r < image.getHeight(); ++r)
+			for (unsigned c = 0; c < image.getWidth(); ++c)
+			{
+				const uint8_t* bgr = image.ptr<uint8_t>(c, r);
+				n += (bgr[1] == 180 && bgr[0] == 0 && bgr[2] == 0) ? 1 : 0;
+			}
+		return n;
+	};
+	EXPECT_EQ(greenPixels(out + "/map.png"), 0u);
+	EXPECT_GT(greenPixels(out + "/map_loop_closures.png"), 20u);
 	mrpt::graphs::CNetworkOfPoses2DInf graph;
 	graph.loadFromTextFile(out + "/graph.graph");
 	EXPECT_GT(graph.nodeCount(), 50u);  // measured 104 keyframes

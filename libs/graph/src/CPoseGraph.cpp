@@ -1,4 +1,5 @@
 #include <hslam/graph/CPoseGraph.h>
+#include <hslam/graph/sparse_pose_solver.h>
 #include <mrpt/graphs/CNetworkOfPoses.h>
 #include <mrpt/graphslam/levmarq.h>
 #include <mrpt/math/wrap2pi.h>
@@ -91,6 +92,12 @@ double CPoseGraph::totalChi2() const
 
 size_t CPoseGraph::solveOnce()
 {
+	if (m_options.solver == "sparse")
+	{
+		TSparseSolverOptions o;
+		o.max_iterations = m_options.max_iterations;
+		return solvePoseGraphSparse(m_nodes, m_edges, o);
+	}
 	auto g = toMrpt(m_nodes, m_edges);
 	mrpt::graphslam::TResultInfoSpaLevMarq info{};
 	mrpt::containers::yaml params;

@@ -74,6 +74,13 @@ void writeMaps(const CMappingPipeline& pipeline, const TOutputOptions& options, 
 	mrpt::img::CImage image = renderMapWithPaths(pipeline, pipeline.grid(), frame, options);
 	savePng(image, dir + "/map.png");
 	written.push_back(dir + "/map.png");
+	if (const auto* loops = pipeline.loopClosureStage())
+	{
+		mrpt::img::CImage closures = image;
+		drawLoopClosures(closures, frame, *loops);
+		savePng(closures, dir + "/map_loop_closures.png");
+		written.push_back(dir + "/map_loop_closures.png");
+	}
 	if (pipeline.sonarStage().tbfOptions().enabled)
 	{
 		drawCorners(image, frame, pipeline.sonarStage().corners());

@@ -21,6 +21,27 @@ void printLoopClosureTiming(const CLoopClosureStage& stage, std::ostream& out)
 		<< "  max ms per optimisation: " << t.max_optimize_ms << "\n";
 }
 
+size_t drawLoopClosures(mrpt::img::CImage& image, const maps::TImageFrame& frame, const CLoopClosureStage& stage)
+{
+	const auto& nodes = stage.backend().graph().nodes();
+	const auto& closures = stage.backend().closures();
+	const mrpt::img::TColor rejected{80, 80, 255}, accepted{0, 180, 0}, dropped{255, 140, 0};
+	size_t drawn = 0;
+	for (const bool verifiedPass : {false, true})
+		for (const auto& c : closures)
+		{
+			const bool wasDropped = c.reason == "dropped by optimiser", verified = c.accepted || wasDropped;
+			if (verified != verifiedPass || c.query_node >= nodes.size() || c.anchor_node >= nodes.size()) continue;
+			double x0, y0, x1, y1;
+			frame.worldToPixel(nodes[c.anchor_node].pose.x, nodes[c.anchor_node].pose.y, x0, y0);
+			frame.worldToPixel(nodes[c.query_node].pose.x, nodes[c.query_node].pose.y, x1, y1);
+			image.line(static_cast<int>(x0), static_cast<int>(y0), static_cast<int>(x1), static_cast<int>(y1),
+					   c.accepted ? accepted : wasDropped ? dropped : rejected, verified ? 2 : 1);
+			++drawn;
+		}
+	return drawn;
+}
+
 void writeLoopClosureOutputs(const CMappingPipeline& pipeline, const std::string& dir,
 							 std::vector<std::string>& written)
 {

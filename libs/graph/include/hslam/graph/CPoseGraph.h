@@ -5,9 +5,12 @@
  * poses with a 3x3 information matrix and a kind: sequential (front-end),
  * weak (across an odometry gap: never rigid) and loop (closures).
  *
- * optimize() runs MRPT's sparse Levenberg-Marquardt
- * (mrpt::graphslam::optimize_graph_spa_levmarq, Konolige et al. 2010) over a
- * mrpt::graphs::CNetworkOfPoses2DInf built from the active edges, node 0 fixed.
+ * optimize() runs sparse Levenberg-Marquardt (Konolige et al. 2010) over the
+ * active edges, node 0 fixed: by default on Eigen's sparse Cholesky
+ * (sparse_pose_solver.h, `solver = sparse`), or MRPT's
+ * mrpt::graphslam::optimize_graph_spa_levmarq over a
+ * mrpt::graphs::CNetworkOfPoses2DInf (`solver = mrpt`), which is the same
+ * model but O(edges x nodes) to set up (docs/loop-closure.md).
  * Robustness against wrong closures: after each solve the loop edge of largest
  * chi2 above `max_loop_chi2` is switched off and the graph is solved again
  * from the poses before the call (edge dropping, the hard form of switchable
@@ -57,10 +60,12 @@ struct TPoseGraphOptions
 	int max_iterations = 100;  //!< Levenberg-Marquardt iterations per solve
 	double max_loop_chi2 = 16.27;  //!< loop edges above (3-dof chi2, 99.9 %) after a solve are dropped
 	int max_drop_rounds = 5;  //!< at most this many loop edges dropped per optimize()
+	std::string solver = "sparse";  //!< "sparse" (Eigen, sparse_pose_solver.h) or "mrpt" (optimize_graph_spa_levmarq)
 
 	template <class V>
 	void visit(V& v)
 	{
+		v.choice("solver", solver, {"sparse", "mrpt"});
 		v.integer("max_iterations", max_iterations, 1, 10000);
 		v.real("max_loop_chi2", max_loop_chi2, 0.1, 1e9);
 		v.integer("max_drop_rounds", max_drop_rounds, 0, 100);

@@ -1,0 +1,310 @@
+/* hslam-bench graph: the cost of the loop-closure back-end (issue 13).
+ *
+ *   hslam-bench graph [-r RAWLOG -g GROUND_TRUTH.tum ...] [-c INI] [--out DIR] [--max-keyframes N]
+ *
+ * Part 1, optimisation against graph size: synthetic pose graphs of a robot
+ * driving laps of a circle (60 m around, a keyframe every 0.5 m: 120 per
+ * lap), sequential edges from a biased, noisy front-end (0.2 deg/keyframe of
+ * heading bias, 2 cm / 0.5 deg noise) and a loop edge every 10 keyframes to
+ * the same place one lap earlier (2 cm / 0.5 deg noise), up to --max-keyframes
+ * (default 10 000). For each size, the state the pipeline is in when a
+ * closure arrives: every keyframe up to the previous closure already
+ * optimised (placed at the truth; the optimum lies within centimetres of it),
+ * the 10 keyframes since then chained on by the drifting front-end. Then the
+ * new closure's edge is added and the solve the pipeline runs for it is
+ * timed ("per closure": CPoseGraph::optimize() over every node, with the
+ * robust edge-dropping step), with our sparse solver (Eigen) and with MRPT's
+ * optimize_graph_spa_levmarq in the same run.
+ * The ATE of the last keyframes before and after shows the solve worked.
+ *
+ * Part 2, the back-end in the pipeline: each -r rawlog through hslam-process
+ * with [loop_closure] enabled = false and = true (same INI otherwise),
+ * whole-process CPU ms per scan of both, their ratio (issue target <= 1.5),
+ * and ATE of both with a ground truth. */
+#include "bench_common.h"
+#include "child_process.h"
+
+#include <hslam/eval/evaluate_trajectory.h>
+#include <hslam/graph/CPoseGraph.h>
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <optional>
+#include <random>
+#include <regex>
+#include <sstream>
+
+namespace hslam::bench
+{
+namespace
+{
+namespace fs = std::filesystem;
+using mrpt::math::TPose2D;
+
+/** The synthetic lap route and the front-end's errors on it. */
+struct TLapRoute
+{
+	double circumference_m = 60.0, keyframe_spacing_m = 0.5;
+	double yaw_bias_rad = mrpt::DEG2RAD(0.2);  //!< per keyframe: the drift loop closure removes
+	double xy_noise_m = 0.02, yaw_noise_rad = mrpt::DEG2RAD(0.5);
+	int closure_every = 10;
+
+	int keyframesPerLap() const { return static_cast<int>(std::lround(circumference_m / keyframe_spacing_m)); }
+	TPose2D truth(int k) const
+	{
+		const double radius = circumference_m / (2 * M_PI), a = k * keyframe_spacing_m / radius;
+		return {radius * std::sin(a), radius * (1 - std::cos(a)), mrpt::math::wrapToPi(a)};
+	}
+};
+
+Eigen::Matrix3d informationOf(double xyStd_m, double yawStd_rad)
+{
+	return Eigen::Vector3d(1 / (xyStd_m * xyStd_m), 1 / (xyStd_m * xyStd_m), 1 / (yawStd_rad * yawStd_rad))
+		.asDiagonal();
+}
+
+/** A measured relative pose: the true one plus noise (and bias). */
+TPose2D measured(const TPose2D& truthRelative, const TLapRoute& route, double yawBias_rad, std::mt19937& rng)
+{
+	std::normal_distribution<double> xy(0, route.xy_noise_m), yaw(0, route.yaw_noise_rad);
+	return {truthRelative.x + xy(rng), truthRelative.y + xy(rng), truthRelative.phi + yaw(rng) + yawBias_rad};
+}
+
+/** Adds keyframes [graph.nodeCount(), end) with their sequential edges and
+ * the loop edges due among them (those of keyframes < closuresUpTo); each
+ * new node is placed at the truth (`atTruth`, an optimised past) or chained
+ * on the previous node by its measured edge (the front-end since then). */
+void extendLaps(graph::CPoseGraph& g, const TLapRoute& route, int end, int closuresUpTo, bool atTruth,
+				std::mt19937& rng)
+{
+	const int lap = route.keyframesPerLap();
+	for (int k = static_cast<int>(g.nodeCount()); k < end; ++k)
+	{
+		if (k == 0)
+		{
+			g.addNode(0, route.truth(0));
+			continue;
+		}
+		graph::TGraphEdge e;
+		e.from = k - 1, e.to = k;
+		e.relative = measured(graph::relativePose(route.truth(k - 1), route.truth(k)), route, route.yaw_bias_rad, rng);
+		e.information = informationOf(route.xy_noise_m, route.yaw_noise_rad);
+		g.addNode(k, atTruth ? route.truth(k) : graph::composePose(g.nodes()[k - 1].pose, e.relative));
+		g.addEdge(e);
+		if (k >= lap && k % route.closure_every == 0 && k < closuresUpTo)
+		{
+			graph::TGraphEdge loop = e;
+			loop.from = k - lap, loop.kind = graph::EEdgeKind::loop;
+			loop.relative = measured(graph::relativePose(route.truth(k - lap), route.truth(k)), route, 0, rng);
+			g.addEdge(loop);
+		}
+	}
+}
+
+/** Position RMSE of the nodes [first, nodeCount()) against the truth. */
+double ateOf(const graph::CPoseGraph& g, const TLapRoute& route, size_t first)
+{
+	double sum2 = 0;
+	for (size_t k = first; k < g.nodeCount(); ++k)
+	{
+		const auto t = route.truth(static_cast<int>(k));
+		sum2 += std::pow(g.nodes()[k].pose.x - t.x, 2) + std::pow(g.nodes()[k].pose.y - t.y, 2);
+	}
+	return std::sqrt(sum2 / static_cast<double>(g.nodeCount() - first));
+}
+
+/** One solver on one graph size. */
+struct TGraphSizeRow
+{
+	int nominal = 0;  //!< the size asked for
+	size_t keyframes = 0, edges = 0;
+	double ate_new_before_m = 0, ate_new_after_m = 0, ate_all_after_m = 0;
+	graph::TOptimizationReport per_closure;
+};
+
+TGraphSizeRow measureGraphSize(int keyframes, const TLapRoute& route, const std::string& solver)
+{
+	std::mt19937 rng(1234);
+	graph::TPoseGraphOptions options;
+	options.solver = solver;
+	graph::CPoseGraph g(options);
+	TGraphSizeRow row;
+	row.nominal = keyframes;
+	const int previous = keyframes - keyframes % route.closure_every;  // the last closure already solved
+	extendLaps(g, route, previous + 1, previous + 1, true, rng);
+	g.optimize();  // the optimised past (the truth is near, not at, its optimum)
+	const size_t firstNew = g.nodeCount();
+	const int next = previous + route.closure_every;
+	extendLaps(g, route, next, next, false, rng);
+	extendLaps(g, route, next + 1, next + 1, false, rng);  // the keyframe that closes the loop, and its edge
+	row.ate_new_before_m = ateOf(g, route, firstNew);
+	row.per_closure = g.optimize();
+	row.ate_new_after_m = ateOf(g, route, firstNew);
+	row.ate_all_after_m = ateOf(g, route, 0);
+	row.keyframes = g.nodeCount(), row.edges = g.edges().size();
+	return row;
+}
+
+/** Rows of the default solver (sparse) and its peer (MRPT's), size by size. */
+void printGraphRows(const std::vector<TGraphSizeRow>& ours, const std::vector<TGraphSizeRow>& mrpt)
+{
+	std::cout << "\nPose-graph optimisation for one new closure (CPoseGraph::optimize), synthetic laps\n"
+			  << std::setw(10) << "keyframes" << std::setw(8) << "edges" << std::setw(12) << "sparse ms" << std::setw(6)
+			  << "iter" << std::setw(12) << "MRPT ms" << std::setw(6) << "iter" << std::setw(10) << "speedup"
+			  << std::setw(20) << "new 10 ATE before" << std::setw(13) << "after sparse" << std::setw(11) << "after MRPT"
+			  << std::setw(12) << "chi2 sparse" << std::setw(12) << "chi2 MRPT" << "\n";
+	for (size_t k = 0; k < ours.size() && k < mrpt.size(); ++k)
+	{
+		const auto &r = ours[k], &m = mrpt[k];
+		std::cout << std::setw(10) << r.keyframes << std::setw(8) << r.edges << std::fixed << std::setprecision(1)
+				  << std::setw(12) << r.per_closure.time_ms << std::setw(6) << r.per_closure.iterations << std::setw(12)
+				  << m.per_closure.time_ms << std::setw(6) << m.per_closure.iterations << std::setw(10)
+				  << m.per_closure.time_ms / r.per_closure.time_ms << std::setprecision(3) << std::setw(20)
+				  << r.ate_new_before_m << std::setw(13) << r.ate_new_after_m << std::setw(11) << m.ate_new_after_m
+				  << std::setprecision(1) << std::setw(12) << r.per_closure.final_chi2 << std::setw(12)
+				  << m.per_closure.final_chi2 << "\n";
+	}
+	std::cout << std::defaultfloat << std::setprecision(6);
+	for (size_t k = 0; k < ours.size() && k < mrpt.size(); ++k)
+		std::cout << "graph_optimize_ms_at_" << ours[k].nominal << "=" << ours[k].per_closure.time_ms << "\n"
+				  << "graph_optimize_mrpt_ms_at_" << ours[k].nominal << "=" << mrpt[k].per_closure.time_ms << "\n";
+	if (!ours.empty() && ours.back().nominal >= 10000)
+		std::cout << "graph_optimize_ms_at_10k=" << ours.back().per_closure.time_ms << "\n";
+}
+
+/** One rawlog through hslam-process with the back-end off and on. */
+struct TBackendRow
+{
+	std::string name;
+	size_t scans = 0;
+	double cpu_off_s = 0, cpu_on_s = 0;
+	std::optional<double> ate_off_m, ate_on_m;
+	std::string closures;  //!< the run's "closures tested: N (accepted A, rejected R)" line
+};
+
+size_t scansOf(const std::string& summaryJson)
+{
+	std::ifstream f(summaryJson);
+	std::stringstream text;
+	text << f.rdbuf();
+	std::smatch m;
+	const std::string s = text.str();
+	if (!std::regex_search(s, m, std::regex("\"scans\": *([0-9]+)")))
+		throw std::runtime_error(summaryJson + ": no \"scans\" field");
+	return std::stoul(m[1]);
+}
+
+std::string lineStartingWith(const std::string& file, const std::string& prefix)
+{
+	std::ifstream f(file);
+	for (std::string line; std::getline(f, line);)
+		if (line.rfind(prefix, 0) == 0) return line;
+	return std::string(prefix.size(), ' ');
+}
+
+TBackendRow measureBackend(const std::string& process, const std::string& config, const std::string& rawlog,
+						   const std::string& truth, const std::string& outDir)
+{
+	TBackendRow row;
+	row.name = fs::path(rawlog).stem().string();
+	const std::string dir = outDir + "/" + row.name;
+	fs::create_directories(dir);
+	const auto run = [&](const std::string& tag, bool on) {
+		const std::string out = dir + "/" + tag;
+		fs::remove_all(out);
+		const std::string cmd = shellQuote(process) + " -c " + shellQuote(config) + " -i " + shellQuote(rawlog) +
+								" -o " + shellQuote(out) + " --set output.write_tiles=false --set loop_closure.enabled=" +
+								(on ? "true" : "false");
+		std::cerr << "\rgraph: " << row.name << " back-end " << tag << "   " << std::flush;
+		const double cpu = childCpuSeconds(cmd, dir + "/" + tag + ".log");
+		std::optional<double> ate;
+		if (!truth.empty()) ate = eval::evaluateTumFiles(truth, out + "/trajectory.tum").ate.position_m.rmse;
+		return std::make_pair(cpu, ate);
+	};
+	std::tie(row.cpu_off_s, row.ate_off_m) = run("off", false);
+	std::tie(row.cpu_on_s, row.ate_on_m) = run("on", true);
+	std::cerr << "\n";
+	row.scans = scansOf(dir + "/on/summary.json");
+	row.closures = lineStartingWith(dir + "/on.log", "  closures tested:").substr(2);
+	return row;
+}
+
+std::string metresOrDash(const std::optional<double>& v)
+{
+	if (!v) return "-";
+	std::ostringstream s;
+	s << std::fixed << std::setprecision(3) << *v;
+	return s.str();
+}
+
+void printBackendRows(const std::vector<TBackendRow>& rows)
+{
+	if (rows.empty()) return;
+	std::cout << "\nThe back-end in hslam-process: whole-process CPU ms per scan, loop closure off / on\n"
+			  << std::left << std::setw(24) << "rawlog" << std::right << std::setw(7) << "scans" << std::setw(10) << "off ms"
+			  << std::setw(10) << "on ms" << std::setw(8) << "ratio" << std::setw(11) << "ATE off" << std::setw(11)
+			  << "ATE on" << "\n";
+	double extra = 0, off = 0, scans = 0;
+	for (const auto& r : rows)
+	{
+		const double n = static_cast<double>(r.scans), offMs = 1000 * r.cpu_off_s / n, onMs = 1000 * r.cpu_on_s / n;
+		std::cout << std::left << std::setw(24) << r.name.substr(0, 23) << std::right << std::setw(7) << r.scans
+				  << std::fixed << std::setprecision(2) << std::setw(10) << offMs << std::setw(10) << onMs
+				  << std::setw(8) << onMs / offMs << std::setw(11) << metresOrDash(r.ate_off_m) << std::setw(11)
+				  << metresOrDash(r.ate_on_m) << "   " << r.closures << "\n"
+				  << std::defaultfloat << std::setprecision(6);
+		extra += 1000 * (r.cpu_on_s - r.cpu_off_s), off += 1000 * r.cpu_off_s, scans += n;
+	}
+	for (const auto& r : rows)
+		std::cout << "graph_" << r.name << "_cost_ratio=" << r.cpu_on_s / r.cpu_off_s << "\n"
+				  << (r.ate_on_m ? "graph_" + r.name + "_ate_on_m=" + std::to_string(*r.ate_on_m) + "\n" : "");
+	std::cout << "loop_closure_ms_per_scan=" << extra / scans << "\nloop_closure_cost_ratio=" << (off + extra) / off
+			  << "\n";
+}
+}  // namespace
+
+int runGraphSuite(int argc, char** argv)
+{
+	TCLAP::CmdLine cmd("hslam-bench graph: pose-graph optimisation against graph size, and the loop-closure back-end's "
+					   "cost in hslam-process", ' ', "0.1");
+	TCLAP::UnlabeledValueArg<std::string> suite("suite", "graph", true, "", "suite", cmd);
+	TCLAP::MultiArg<std::string> rawlogs("r", "rawlog", "rawlog(s) run with the back-end off and on (default: none)",
+										 false, "file", cmd);
+	TCLAP::MultiArg<std::string> truths("g", "ground-truth", "TUM ground truth of the i-th rawlog ('-' = none)", false,
+										"file.tum", cmd);
+	TCLAP::ValueArg<std::string> config("c", "config", "hslam-process INI (default config_ini/hslam-default.ini)", false,
+										"config_ini/hslam-default.ini", "file.ini", cmd);
+	TCLAP::ValueArg<std::string> out("", "out", "folder for the runs (default ./hslam-bench-graph)", false,
+									 "hslam-bench-graph", "dir", cmd);
+	TCLAP::ValueArg<int> maxKeyframes("", "max-keyframes", "largest synthetic graph (default 10000)", false, 10000, "N", cmd);
+	if (!cmd.parse(argc, argv)) return 0;
+	const TLapRoute route;
+	std::vector<TGraphSizeRow> ours, mrpt;
+	for (int n : {500, 1000, 2000, 5000, 10000})
+	{
+		if (n > maxKeyframes.getValue()) break;
+		std::cerr << "\rgraph: " << n << " keyframes   " << std::flush;
+		ours.push_back(measureGraphSize(n, route, "sparse"));
+		mrpt.push_back(measureGraphSize(n, route, "mrpt"));
+	}
+	std::cerr << "\n";
+	printGraphRows(ours, mrpt);
+	const std::string process = (fs::canonical("/proc/self/exe").parent_path() / "hslam-process").string();
+	std::vector<TBackendRow> backend;
+	for (size_t k = 0; k < rawlogs.getValue().size(); ++k)
+	{
+		std::string truth = k < truths.getValue().size() ? truths.getValue()[k] : "";
+		if (truth == "-") truth.clear();
+		backend.push_back(measureBackend(process, fs::absolute(config.getValue()).string(), rawlogs.getValue()[k], truth,
+										 fs::absolute(out.getValue()).string()));
+	}
+	printBackendRows(backend);
+	return 0;
+}
+
+}  // namespace hslam::bench

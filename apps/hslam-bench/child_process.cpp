@@ -1,0 +1,31 @@
+#include "child_process.h"
+
+#include <sys/resource.h>
+
+#include <cstdlib>
+#include <stdexcept>
+
+namespace hslam::bench
+{
+std::string shellQuote(const std::string& s)
+{
+	std::string q = "'";
+	for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+	return q + "'";
+}
+
+double childCpuSeconds(const std::string& command, const std::string& logFile)
+{
+	const auto cpu = [] {
+		rusage u{};
+		getrusage(RUSAGE_CHILDREN, &u);
+		return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+	};
+	const double before = cpu();
+	const int status = std::system((command + " </dev/null >" + shellQuote(logFile) + " 2>&1").c_str());
+	if (status != 0) throw std::runtime_error("command failed (status " + std::to_string(status) + "): " + command +
+											  " (see " + logFile + ")");
+	return cpu() - before;
+}
+
+}  // namespace hslam::bench
