@@ -10,6 +10,7 @@
  *   hslam-bench legs-sim [--data rawlog_samples] [--out DIR] [--config FILE]
  *   hslam-bench hwdrivers [--repetitions N]
  *   hslam-bench pipeline [-r RAWLOG ...] [-g GROUND_TRUTH ...] [-n N]   (own options: bench_pipeline.cpp)
+ *   hslam-bench nav [--pairs-per-world N] [--methods ours,mrpt_nd,...]  (own options: bench_nav.cpp)
  */
 #include <hslam/common/version.h>
 #include "bench_common.h"
@@ -20,8 +21,8 @@
 
 int main(int argc, char** argv)
 {
-	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, grid-range, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers)", ' ', hslam::common::versionText());
-	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid, grid-range, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers",
+	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, grid-range, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers, pipeline, nav)", ' ', hslam::common::versionText());
+	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid, grid-range, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers, pipeline, nav (hslam-bench nav --help)",
 												true, "", "suite", cmd);
 	TCLAP::MultiArg<std::string> rawlogs("r", "rawlog",
 										 "rawlog(s) with laser scans and odometry (default: MRPT's sample rawlog)",
@@ -39,6 +40,7 @@ int main(int argc, char** argv)
 	try
 	{
 		if (argc > 1 && std::string(argv[1]) == "pipeline") return hslam::bench::runPipelineSuite(argc, argv);
+		if (argc > 1 && std::string(argv[1]) == "nav") return hslam::bench::runNavSuite(argc, argv);
 		if (!cmd.parse(argc, argv)) return 0;  // --help or --version was printed
 		if (suite.getValue() == "lines") return hslam::bench::runLinesSuite(rawlogs.getValue(), std::max(1, repetitions.getValue()));
 		if (suite.getValue() == "grid-range")
