@@ -42,6 +42,8 @@ struct TNavBenchOptions
 	sim::TScenarioDrawOptions draw;
 	sim::TClosedLoopOptions loop;
 	std::vector<std::string> methods{"ours", "mrpt_nd", "mrpt_vff", "mrpt_fulleval"};
+	std::vector<std::string> worlds;  //!< empty: every world
+	bool mrpt_reverse = false;  //!< keep the stock config's backward PTG (TMrptReactiveOptions::forward_ptgs_only)
 	double shortest_path_clearance_m = 0.2;  //!< the collision radius: the shortest path a disc robot can take
 };
 
@@ -51,6 +53,7 @@ struct TNavRun
 	std::string method, world;
 	sim::TClosedLoopResult result;
 	double final_distance_m = 0, shortest_m = NAN;
+	mrpt::math::TPose2D start, end;
 	bool success = false;
 };
 
@@ -79,6 +82,8 @@ std::unique_ptr<sim::IClosedLoopController> makeController(const std::string& me
 	sim::TMrptReactiveOptions m;
 	m.holonomic_method = holonomicMethod(method);
 	m.ptg_cache_dir = o.ptg_cache_dir;
+	m.forward_ptgs_only = !o.mrpt_reverse;
+	m.footprint_min_radius_m = o.loop.collision_radius_m;
 	return std::make_unique<sim::CMrptReactiveDriver>(mrptIni, m, s.targets.back(), clockOrigin_s);
 }
 
@@ -91,6 +96,8 @@ TNavRun runOne(const std::string& method, const sim::TNavScenario& s, const sim:
 	TNavRun run{method, s.world, sim::runClosedLoop(simulator, *controller, o.loop)};
 	const auto end = simulator.robot().truePose();
 	run.final_distance_m = std::hypot(end.x - s.targets.back().x, end.y - s.targets.back().y);
+	run.start = s.start;
+	run.end = end;
 	run.success = run.result.success() && run.final_distance_m < 0.25;
 	return run;
 }
@@ -100,11 +107,15 @@ std::string outcome(const TNavRun& r)
 	std::ostringstream ss;
 	ss << std::fixed << std::setprecision(1);
 	if (r.success) ss << "reached in " << r.result.time_s << " s, path " << r.result.path_length_m << " m";
-	else if (r.result.collided) ss << "COLLISION at " << r.result.time_s << " s";
+	else if (r.result.collided)
+		ss << "COLLISION at " << r.result.time_s << " s at (" << std::setprecision(2) << r.end.x << ", " << r.end.y
+		   << ", " << std::setprecision(0) << r.end.phi * 180 / M_PI << " deg)" << std::setprecision(1);
 	else if (r.result.timed_out) ss << "timeout, " << r.final_distance_m << " m short";
 	else if (r.result.failed) ss << "gave up at " << r.result.time_s << " s, " << r.final_distance_m << " m short";
 	else ss << "stopped " << r.final_distance_m << " m from the target";
 	if (r.result.person_contacts) ss << " (" << r.result.person_contacts << " person contacts)";
+	ss << std::setprecision(2) << "  [start " << r.start.x << " " << r.start.y << " " << std::setprecision(0)
+	   << r.start.phi * 180 / M_PI << " deg]";
 	return ss.str();
 }
 
@@ -266,19 +277,27 @@ TNavBenchOptions parseOptions(int argc, char** argv, bool& help)
 	TCLAP::ValueArg<double> timeout("", "timeout", "simulated seconds per run (default 180)", false, 180, "s", cmd);
 	TCLAP::ValueArg<std::string> methods("", "methods", "comma list of ours, mrpt_nd, mrpt_vff, mrpt_fulleval (default all)",
 										 false, "ours,mrpt_nd,mrpt_vff,mrpt_fulleval", "list", cmd);
+	TCLAP::ValueArg<std::string> worlds("", "worlds", "comma list of worlds to run (default all: lab, floor, cluttered, doorway, utrap)",
+										false, "", "list", cmd);
 	TCLAP::ValueArg<std::string> scenes("", "scenes", "folder of the nav-*.scene worlds (default config_ini/sim-worlds)",
 										false, "config_ini/sim-worlds", "dir", cmd);
 	TCLAP::ValueArg<std::string> mrptConfig("", "mrpt-config", "MRPT reactive INI (default: the stock reactive2d_config.ini)",
 											false, sim::kMrptReactive2dConfig, "file.ini", cmd);
 	TCLAP::ValueArg<std::string> cache("", "ptg-cache", "folder for MRPT's PTG collision-grid cache (default <tmp>/hslam-mrpt-ptg-cache)",
 									   false, "", "dir", cmd);
+	TCLAP::SwitchArg reverse("", "mrpt-reverse", "keep the stock config's backward PTG (K = -1; default: forward PTGs only, "
+							 "the P3-DX senses ahead only)", cmd);
 	TNavBenchOptions o;
 	help = !cmd.parse(argc, argv);
 	o.draw.pairs_per_world = std::max(1, perWorld.getValue());
 	o.loop.timeout_s = timeout.getValue();
 	o.scene_dir = common::resolveDataFile(scenes.getValue());
 	o.mrpt_config = mrptConfig.getValue();
+	o.mrpt_reverse = reverse.getValue();
 	o.ptg_cache_dir = cache.isSet() ? cache.getValue() : (fs::temp_directory_path() / "hslam-mrpt-ptg-cache").string();
+	std::stringstream ws(worlds.getValue());
+	for (std::string w; std::getline(ws, w, ',');)
+		if (!w.empty()) o.worlds.push_back(w);
 	o.methods.clear();
 	std::stringstream ss(methods.getValue());
 	for (std::string m; std::getline(ss, m, ',');)
@@ -297,13 +316,18 @@ int runNavSuite(int argc, char** argv)
 	const auto o = parseOptions(argc, argv, help);
 	if (help) return 0;
 	fs::create_directories(o.ptg_cache_dir);
-	const auto pairs = sim::benchmarkScenarios(o.scene_dir, o.draw);
+	auto pairs = sim::benchmarkScenarios(o.scene_dir, o.draw);
+	if (!o.worlds.empty())
+		pairs.erase(std::remove_if(pairs.begin(), pairs.end(), [&](const sim::TNavScenario& s)
+								   { return std::find(o.worlds.begin(), o.worlds.end(), s.world) == o.worlds.end(); }),
+					pairs.end());
 	const auto worlds = worldsOf(pairs);
 	std::cout << "Suite nav: " << pairs.size() << " start/target pairs in " << worlds.size() << " worlds, "
 			  << o.methods.size() << " methods, timeout " << o.loop.timeout_s << " s (simulated), control period "
 			  << o.loop.control_period_s << " s, collision radius " << o.loop.collision_radius_m << " m\n"
 			  << "ours: libs/nav defaults (target seeking <= 0.3 m/s, eq. 33); MRPT: " << o.mrpt_config
-			  << " as shipped (robotMax_V_mps, robotMax_W_degps), P3-DX footprint, target reached within 0.2 m\n";
+			  << " (speed limits and holonomic parameters as shipped), P3-DX footprint within the collision disc, "
+			  << (o.mrpt_reverse ? "all PTGs (backward one included)" : "forward PTGs only") << ", target reached within 0.2 m\n";
 	const auto runs = runAll(pairs, o);
 	printMethodTable(runs, o);
 	printWorldTable(runs, worlds, o);

@@ -7,6 +7,7 @@
 #include <hslam/sim/nav_scenarios.h>
 #include <hslam/sim/scene.h>
 #include <hslam/testing/test_paths.h>
+#include <mrpt/config/CConfigFileMemory.h>
 
 #include <cmath>
 #include <filesystem>
@@ -17,6 +18,15 @@ using namespace hslam;
 
 namespace
 {
+std::string stockConfig()
+{
+	std::ifstream f(sim::kMrptReactive2dConfig);
+	EXPECT_TRUE(f.good()) << sim::kMrptReactive2dConfig;
+	std::stringstream ini;
+	ini << f.rdbuf();
+	return ini.str();
+}
+
 struct TRun
 {
 	sim::TClosedLoopResult result;
@@ -30,13 +40,9 @@ TRun driveMrpt(const std::string& method, const std::string& sceneText, const mr
 	o.holonomic_method = method;
 	o.ptg_cache_dir = std::string(HSLAM_BINARY_DIR) + "/mrpt-ptg-cache";
 	std::filesystem::create_directories(o.ptg_cache_dir);
-	std::ifstream f(sim::kMrptReactive2dConfig);
-	EXPECT_TRUE(f.good()) << sim::kMrptReactive2dConfig;
-	std::stringstream ini;
-	ini << f.rdbuf();
 	const auto config = sim::closedLoopConfig(start, 1);
 	sim::CSimulator simulator(config, sim::parseSceneText(sceneText, "test"));
-	sim::CMrptReactiveDriver driver(ini.str(), o, target, config.simulation.start_time_s);
+	sim::CMrptReactiveDriver driver(stockConfig(), o, target, config.simulation.start_time_s);
 	sim::TClosedLoopOptions loop;
 	loop.timeout_s = 60;
 	TRun run{sim::runClosedLoop(simulator, driver, loop)};
@@ -82,4 +88,26 @@ TEST(MrptReactive, RejectsAnUnknownHolonomicMethod)
 	sim::TMrptReactiveOptions o;
 	o.holonomic_method = "CHolonomicXYZ";
 	EXPECT_THROW(sim::mrptReactiveConfig("[x]\na=1\n", o), std::invalid_argument);
+}
+
+TEST(MrptReactive, ConfigKeepsTheForwardPtgsAndTheP3dxFootprint)
+{
+	sim::TMrptReactiveOptions o;
+	o.holonomic_method = "CHolonomicVFF";
+	const mrpt::config::CConfigFileMemory cfg(sim::mrptReactiveConfig(stockConfig(), o));
+	EXPECT_EQ(cfg.read_string("CAbstractPTGBasedReactive", "holonomic_method", ""), "CHolonomicVFF");
+	EXPECT_EQ(cfg.read_int("CReactiveNavigationSystem", "PTG_COUNT", 0), 2);  // stock: 3, the third with K = -1
+	EXPECT_EQ(cfg.read_string("CReactiveNavigationSystem", "PTG0_Type", ""), "CPTG_DiffDrive_C");
+	EXPECT_DOUBLE_EQ(cfg.read_double("CReactiveNavigationSystem", "PTG0_K", 0), 1.0);
+	EXPECT_EQ(cfg.read_string("CReactiveNavigationSystem", "PTG1_Type", ""), "CPTG_DiffDrive_alpha");
+	std::vector<double> xs, ys;
+	cfg.read_vector("CReactiveNavigationSystem", "RobotModel_shape2D_xs", std::vector<double>(), xs, true);
+	cfg.read_vector("CReactiveNavigationSystem", "RobotModel_shape2D_ys", std::vector<double>(), ys, true);
+	ASSERT_EQ(xs.size(), 4u);
+	ASSERT_EQ(ys.size(), 4u);
+	EXPECT_NEAR(xs[1] - xs[0], 0.4625, 1e-9);  // 262.5 mm ahead, 200 mm behind (the 0.2 m collision disc)
+	EXPECT_NEAR(ys[0] - ys[2], 0.4, 1e-9);  // 381 mm widened to the 0.4 m disc
+	o.forward_ptgs_only = false;
+	const mrpt::config::CConfigFileMemory stock(sim::mrptReactiveConfig(stockConfig(), o));
+	EXPECT_EQ(stock.read_int("CReactiveNavigationSystem", "PTG_COUNT", 0), 3);
 }

@@ -1,8 +1,11 @@
 /* hslam sim: CMrptReactiveDriver (see CMrptReactiveDriver.h). */
 #include <hslam/sim/CMrptReactiveDriver.h>
 #include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/core/format.h>
 #include <mrpt/nav/reactive/CReactiveNavigationSystem.h>
 
+
+#include <algorithm>
 #include <stdexcept>
 
 namespace hslam::sim
@@ -21,6 +24,38 @@ class CQuietReactiveNavigator : public mrpt::nav::CReactiveNavigationSystem
 		m_navProfiler.disable();
 	}
 };
+constexpr const char* kPtgSection = "CReactiveNavigationSystem";
+
+/** Renumbers the PTGs of [CReactiveNavigationSystem] without those whose K
+ * (direction of motion) is negative; returns how many are kept. */
+int dropReversePtgs(mrpt::config::CConfigFileMemory& cfg)
+{
+	const int count = cfg.read_int(kPtgSection, "PTG_COUNT", 0, true);
+	std::vector<std::string> keys;
+	cfg.getAllKeys(kPtgSection, keys);
+	int kept = 0;
+	for (int i = 0; i < count; ++i)
+	{
+		if (cfg.read_double(kPtgSection, mrpt::format("PTG%d_K", i), 1.0) < 0) continue;
+		const std::string from = mrpt::format("PTG%d_", i), to = mrpt::format("PTG%d_", kept);
+		for (const auto& k : keys)
+			if (k.rfind(from, 0) == 0 && i != kept)
+				cfg.write(kPtgSection, to + k.substr(from.size()), cfg.read_string(kPtgSection, k, ""));
+		++kept;
+	}
+	if (kept == 0) throw std::invalid_argument("MRPT reactive config: no forward PTG left");
+	cfg.write(kPtgSection, "PTG_COUNT", kept);
+	return kept;
+}
+
+/** The P3-DX footprint (455 mm long, rotation centre 35 mm behind the middle:
+ * front +262.5 mm, rear -192.5 mm; 381 mm wide) grown to contain a disc of radius r. */
+void writeP3dxFootprint(mrpt::config::CConfigFileMemory& cfg, double r)
+{
+	const double front = std::max(0.2625, r), rear = -std::max(0.1925, r), side = std::max(0.1905, r);
+	cfg.write(kPtgSection, "RobotModel_shape2D_xs", mrpt::format("%.4f %.4f %.4f %.4f", rear, front, front, rear));
+	cfg.write(kPtgSection, "RobotModel_shape2D_ys", mrpt::format("%.4f %.4f %.4f %.4f", side, side, -side, -side));
+}
 }  // namespace
 
 std::string mrptReactiveConfig(const std::string& configText, const TMrptReactiveOptions& o)
@@ -31,12 +66,8 @@ std::string mrptReactiveConfig(const std::string& configText, const TMrptReactiv
 	mrpt::config::CConfigFileMemory cfg(configText);
 	cfg.write("CAbstractPTGBasedReactive", "holonomic_method", m);
 	cfg.write("CAbstractPTGBasedReactive", "ptg_cache_files_directory", o.ptg_cache_dir);
-	if (o.p3dx_footprint)
-	{
-		// 455 mm long, rotation centre 35 mm behind the middle: front +262.5 mm, rear -192.5 mm; 381 mm wide.
-		cfg.write("CReactiveNavigationSystem", "RobotModel_shape2D_xs", std::string("-0.1925 0.2625 0.2625 -0.1925"));
-		cfg.write("CReactiveNavigationSystem", "RobotModel_shape2D_ys", std::string("0.1905 0.1905 -0.1905 -0.1905"));
-	}
+	if (o.p3dx_footprint) writeP3dxFootprint(cfg, o.footprint_min_radius_m);
+	if (o.forward_ptgs_only) dropReversePtgs(cfg);
 	std::string out;
 	cfg.getContent(out);
 	return out;

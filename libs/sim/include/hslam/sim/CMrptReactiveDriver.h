@@ -7,7 +7,11 @@
  * Configuration: the text of an MRPT reactive INI (the caller reads the file,
  * e.g. the stock kMrptReactive2dConfig), with the overrides of
  * TMrptReactiveOptions written on top: the holonomic method, the P3-DX
- * footprint instead of the stock 0.3 x 0.2 m polygon, the directory where
+ * footprint instead of the stock 0.3 x 0.2 m polygon (widened to contain the
+ * closed loop's collision disc, so that MRPT's collision-free is ours), the
+ * reverse PTGs left out (our P3-DX senses ahead only: the LMS200's 180 deg
+ * and the front sonar ring; MRPT keeps no obstacle memory, so a backward
+ * path is planned through space no sensor sees), the directory where
  * MRPT caches its PTG collision grids (MRPT's own file I/O; building the
  * grids takes seconds, loading them a fraction). The navigator is initialised
  * (PTGs built or loaded) in the constructor, so control() times one
@@ -35,6 +39,8 @@ struct TMrptReactiveOptions
 	std::string holonomic_method = "CHolonomicND";  //!< CHolonomicND | CHolonomicVFF | CHolonomicFullEval
 	double target_allowed_distance_m = 0.2;  //!< as ours: 200 mm (thesis App. A, CTargetSeekingLayer)
 	bool p3dx_footprint = true;  //!< P3-DX 455 x 381 mm, rotation centre 35 mm behind the middle
+	double footprint_min_radius_m = 0.2;  //!< the footprint is widened to contain this disc (TClosedLoopOptions::collision_radius_m)
+	bool forward_ptgs_only = true;  //!< leave out the PTGs with K < 0 (backward motion; stock: PTG2)
 	std::string ptg_cache_dir = ".";  //!< where MRPT writes/reads ReacNavGrid_*.dat.gz
 };
 
