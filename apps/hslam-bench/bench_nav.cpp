@@ -43,7 +43,9 @@ struct TNavBenchOptions
 	sim::TClosedLoopOptions loop;
 	std::vector<std::string> methods{"ours", "mrpt_nd", "mrpt_vff", "mrpt_fulleval"};
 	std::vector<std::string> worlds;  //!< empty: every world
-	bool mrpt_reverse = false;  //!< keep the stock config's backward PTG (TMrptReactiveOptions::forward_ptgs_only)
+	bool mrpt_raw_scan = false;  //!< hand MRPT the latest scan as is (TMrptReactiveOptions::compensate_scan_age)
+	bool mrpt_reverse = false;
+	bool mrpt_laser_only = false;  //!< no sonar points for MRPT (TMrptReactiveOptions::use_sonar)  //!< keep the stock config's backward PTG (TMrptReactiveOptions::forward_ptgs_only)
 	double shortest_path_clearance_m = 0.2;  //!< the collision radius: the shortest path a disc robot can take
 };
 
@@ -84,6 +86,8 @@ std::unique_ptr<sim::IClosedLoopController> makeController(const std::string& me
 	m.ptg_cache_dir = o.ptg_cache_dir;
 	m.forward_ptgs_only = !o.mrpt_reverse;
 	m.footprint_min_radius_m = o.loop.collision_radius_m;
+	m.compensate_scan_age = !o.mrpt_raw_scan;
+	m.use_sonar = !o.mrpt_laser_only;
 	return std::make_unique<sim::CMrptReactiveDriver>(mrptIni, m, s.targets.back(), clockOrigin_s);
 }
 
@@ -183,7 +187,7 @@ TNavStats statsOf(const std::vector<TNavRun>& runs, const std::string& method, c
 		st.person_contacts += r.result.person_contacts;
 		st.timeouts += r.result.timed_out;
 		st.gave_up += r.result.failed;
-		clearance.push_back(r.result.min_clearance_m);
+		clearance.push_back(r.result.min_static_clearance_m);
 		cpu += r.result.cpu_s;
 		steps += r.result.control_steps;
 		if (!r.success) continue;
@@ -201,7 +205,7 @@ TNavStats statsOf(const std::vector<TNavRun>& runs, const std::string& method, c
 void printMethodTable(const std::vector<TNavRun>& runs, const TNavBenchOptions& o)
 {
 	std::cout << "\n| method | success | collisions (static) | person contacts | timeouts / gave up | path / shortest "
-				 "| time to target | min clearance (worst / median) | CPU / control step |\n"
+				 "| time to target | min clearance to static obstacles (worst / median) | CPU / control step |\n"
 			  << "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n"
 			  << std::fixed;
 	for (const auto& m : o.methods)
@@ -287,6 +291,9 @@ TNavBenchOptions parseOptions(int argc, char** argv, bool& help)
 									   false, "", "dir", cmd);
 	TCLAP::SwitchArg reverse("", "mrpt-reverse", "keep the stock config's backward PTG (K = -1; default: forward PTGs only, "
 							 "the P3-DX senses ahead only)", cmd);
+	TCLAP::SwitchArg rawScan("", "mrpt-raw-scan", "hand MRPT the latest scan in the robot frame of its own time "
+							 "(default: moved into the current robot frame)", cmd);
+	TCLAP::SwitchArg laserOnly("", "mrpt-laser-only", "MRPT senses the laser only (default: laser + sonar echoes, as ours)", cmd);
 	TNavBenchOptions o;
 	help = !cmd.parse(argc, argv);
 	o.draw.pairs_per_world = std::max(1, perWorld.getValue());
@@ -294,6 +301,8 @@ TNavBenchOptions parseOptions(int argc, char** argv, bool& help)
 	o.scene_dir = common::resolveDataFile(scenes.getValue());
 	o.mrpt_config = mrptConfig.getValue();
 	o.mrpt_reverse = reverse.getValue();
+	o.mrpt_raw_scan = rawScan.getValue();
+	o.mrpt_laser_only = laserOnly.getValue();
 	o.ptg_cache_dir = cache.isSet() ? cache.getValue() : (fs::temp_directory_path() / "hslam-mrpt-ptg-cache").string();
 	std::stringstream ws(worlds.getValue());
 	for (std::string w; std::getline(ws, w, ',');)
@@ -327,7 +336,10 @@ int runNavSuite(int argc, char** argv)
 			  << o.loop.control_period_s << " s, collision radius " << o.loop.collision_radius_m << " m\n"
 			  << "ours: libs/nav defaults (target seeking <= 0.3 m/s, eq. 33); MRPT: " << o.mrpt_config
 			  << " (speed limits and holonomic parameters as shipped), P3-DX footprint within the collision disc, "
-			  << (o.mrpt_reverse ? "all PTGs (backward one included)" : "forward PTGs only") << ", target reached within 0.2 m\n";
+			  << (o.mrpt_reverse ? "all PTGs (backward one included)" : "forward PTGs only") << ", "
+			  << (o.mrpt_laser_only ? "laser only" : "laser + sonar echoes") << ", "
+			  << (o.mrpt_raw_scan ? "obstacles in the frame they were sensed in" : "obstacles moved into the current robot frame")
+			  << ", target reached within 0.2 m\n";
 	const auto runs = runAll(pairs, o);
 	printMethodTable(runs, o);
 	printWorldTable(runs, worlds, o);

@@ -75,7 +75,7 @@ std::string mrptReactiveConfig(const std::string& configText, const TMrptReactiv
 
 CMrptReactiveDriver::CMrptReactiveDriver(const std::string& configText, const TMrptReactiveOptions& o,
 										 const mrpt::math::TPoint2D& target, double clockOrigin_s)
-	: m_robot(std::make_unique<CSimRobot2NavInterface>(clockOrigin_s)),
+	: m_robot(std::make_unique<CSimRobot2NavInterface>(clockOrigin_s, o.compensate_scan_age, o.use_sonar)),
 	  m_target(target),
 	  m_allowed_m(o.target_allowed_distance_m)
 {

@@ -41,6 +41,8 @@ struct TMrptReactiveOptions
 	bool p3dx_footprint = true;  //!< P3-DX 455 x 381 mm, rotation centre 35 mm behind the middle
 	double footprint_min_radius_m = 0.2;  //!< the footprint is widened to contain this disc (TClosedLoopOptions::collision_radius_m)
 	bool forward_ptgs_only = true;  //!< leave out the PTGs with K < 0 (backward motion; stock: PTG2)
+	bool compensate_scan_age = true;  //!< obstacles moved into the current robot frame (CSimRobot2NavInterface)
+	bool use_sonar = true;  //!< sonar echoes as obstacle points too (CSimRobot2NavInterface)
 	std::string ptg_cache_dir = ".";  //!< where MRPT writes/reads ReacNavGrid_*.dat.gz
 };
 

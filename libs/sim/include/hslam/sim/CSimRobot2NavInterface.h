@@ -7,8 +7,16 @@
  *
  * Frames and units as MRPT documents them: pose in the world frame (m, rad);
  * velocity in the world frame (vx, vy m/s, omega rad/s), estimated from the
- * last two poses; obstacles in the robot frame (the scan's points through its
- * sensor pose); timestamps and getNavigationTime() on the SIMULATED clock
+ * last two poses; obstacles in the CURRENT robot frame: the scan's points
+ * through its sensor pose and, when `compensateScanAge`, through the robot's
+ * motion since the scan was taken (the closed loop hands over the latest
+ * scan, up to one laser period old: 0.1 m at MRPT's stock 1 m/s; the stock
+ * config has use_delays_model = false, so MRPT would take old points as
+ * current); when `useSonar`, also one point per sonar echo on its cone's
+ * axis (the same laser + sonar our controller fuses, thesis 4.2.3: the laser
+ * misses thin chair legs between its beams and walls seen edge-on, the sonar
+ * catches them; the cone is not filled, MRPT takes points as exact);
+ * timestamps and getNavigationTime() on the SIMULATED clock
  * (MRPT's own simulator interface, CRobot2NavInterfaceForSimulator_DiffDriven,
  * returns simulated time too), so the navigator's timeouts and obstacle filter
  * see the same time base as the robot. Only differential-drive commands
@@ -17,6 +25,9 @@
 
 #include <hslam/sim/closed_loop.h>
 #include <mrpt/nav/reactive/CRobot2NavInterface.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <deque>
 
 namespace hslam::sim
 {
@@ -25,7 +36,7 @@ class CSimRobot2NavInterface : public mrpt::nav::CRobot2NavInterface
    public:
 	/** `clockOrigin_s`: UNIX time of the simulation start (TSimulationOptions::start_time_s),
 	 * so that pose and scan timestamps share one clock. */
-	explicit CSimRobot2NavInterface(double clockOrigin_s);
+	CSimRobot2NavInterface(double clockOrigin_s, bool compensateScanAge = true, bool useSonar = true);
 
 	/** The closed loop's input of this control step (the scan is copied as points). */
 	void setInput(const TControlInput& in);
@@ -54,7 +65,15 @@ class CSimRobot2NavInterface : public mrpt::nav::CRobot2NavInterface
 
    private:
 	mrpt::system::TTimeStamp stamp(double t_s) const;
+	/** The pose at simulated time t_s, interpolated between the recorded control steps. */
+	mrpt::math::TPose2D poseAt(double t_s) const;
+	/** Robot at time `stamp` seen from the robot now (identity without compensation). */
+	mrpt::poses::CPose2D nowFromThen(mrpt::system::TTimeStamp stamp) const;
+	void addSonarEchoes(mrpt::maps::CSimplePointsMap& obstacles) const;
 	double m_clockOrigin_s;
+	bool m_compensate, m_useSonar;
+	const mrpt::obs::CObservationRange* m_sonar = nullptr;
+	std::deque<std::pair<double, mrpt::math::TPose2D>> m_history;  //!< (t_s, pose) of the last control steps
 	double m_t_s = 0, m_timerStart_s = 0;
 	mrpt::math::TPose2D m_pose;
 	mrpt::math::TTwist2D m_velGlobal;
