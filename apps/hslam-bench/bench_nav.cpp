@@ -18,6 +18,7 @@
 #include "bench_common.h"
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/core/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -45,7 +46,8 @@ struct TNavBenchOptions
 	std::vector<std::string> worlds;  //!< empty: every world
 	bool mrpt_raw_scan = false;  //!< hand MRPT the latest scan as is (TMrptReactiveOptions::compensate_scan_age)
 	bool mrpt_reverse = false;
-	bool mrpt_laser_only = false;  //!< no sonar points for MRPT (TMrptReactiveOptions::use_sonar)  //!< keep the stock config's backward PTG (TMrptReactiveOptions::forward_ptgs_only)
+	double mrpt_max_speed_mps = 0;  //!< > 0: MRPT's speed limits to this (TMrptReactiveOptions::max_speed_mps)
+	bool mrpt_sonar = false;  //!< sonar echoes as points for MRPT too (TMrptReactiveOptions::use_sonar)  //!< keep the stock config's backward PTG (TMrptReactiveOptions::forward_ptgs_only)
 	double shortest_path_clearance_m = 0.2;  //!< the collision radius: the shortest path a disc robot can take
 };
 
@@ -87,7 +89,8 @@ std::unique_ptr<sim::IClosedLoopController> makeController(const std::string& me
 	m.forward_ptgs_only = !o.mrpt_reverse;
 	m.footprint_min_radius_m = o.loop.collision_radius_m;
 	m.compensate_scan_age = !o.mrpt_raw_scan;
-	m.use_sonar = !o.mrpt_laser_only;
+	m.use_sonar = o.mrpt_sonar;
+	m.max_speed_mps = o.mrpt_max_speed_mps;
 	return std::make_unique<sim::CMrptReactiveDriver>(mrptIni, m, s.targets.back(), clockOrigin_s);
 }
 
@@ -293,7 +296,10 @@ TNavBenchOptions parseOptions(int argc, char** argv, bool& help)
 							 "the P3-DX senses ahead only)", cmd);
 	TCLAP::SwitchArg rawScan("", "mrpt-raw-scan", "hand MRPT the latest scan in the robot frame of its own time "
 							 "(default: moved into the current robot frame)", cmd);
-	TCLAP::SwitchArg laserOnly("", "mrpt-laser-only", "MRPT senses the laser only (default: laser + sonar echoes, as ours)", cmd);
+	TCLAP::SwitchArg sonar("", "mrpt-sonar", "MRPT senses sonar echoes (as points on the cone axes) besides the laser "
+						   "(default: the laser only)", cmd);
+	TCLAP::ValueArg<double> maxSpeed("", "mrpt-max-speed", "MRPT's robotMax_V_mps and PTG v_max (m/s; default: the config's, stock 1.0)",
+									 false, 0, "m/s", cmd);
 	TNavBenchOptions o;
 	help = !cmd.parse(argc, argv);
 	o.draw.pairs_per_world = std::max(1, perWorld.getValue());
@@ -302,8 +308,12 @@ TNavBenchOptions parseOptions(int argc, char** argv, bool& help)
 	o.mrpt_config = mrptConfig.getValue();
 	o.mrpt_reverse = reverse.getValue();
 	o.mrpt_raw_scan = rawScan.getValue();
-	o.mrpt_laser_only = laserOnly.getValue();
+	o.mrpt_sonar = sonar.getValue();
+	o.mrpt_max_speed_mps = maxSpeed.getValue();
 	o.ptg_cache_dir = cache.isSet() ? cache.getValue() : (fs::temp_directory_path() / "hslam-mrpt-ptg-cache").string();
+	// One cache folder per PTG set (MRPT names its grid files by PTG index only).
+	o.ptg_cache_dir += std::string(o.mrpt_reverse ? "/all-ptgs" : "/forward-ptgs") +
+					   (o.mrpt_max_speed_mps > 0 ? mrpt::format("-v%.2f", o.mrpt_max_speed_mps) : std::string());
 	std::stringstream ws(worlds.getValue());
 	for (std::string w; std::getline(ws, w, ',');)
 		if (!w.empty()) o.worlds.push_back(w);
@@ -335,9 +345,11 @@ int runNavSuite(int argc, char** argv)
 			  << o.methods.size() << " methods, timeout " << o.loop.timeout_s << " s (simulated), control period "
 			  << o.loop.control_period_s << " s, collision radius " << o.loop.collision_radius_m << " m\n"
 			  << "ours: libs/nav defaults (target seeking <= 0.3 m/s, eq. 33); MRPT: " << o.mrpt_config
-			  << " (speed limits and holonomic parameters as shipped), P3-DX footprint within the collision disc, "
+			  << " (holonomic parameters as shipped, speed limits "
+			  << (o.mrpt_max_speed_mps > 0 ? mrpt::format("%.2f m/s", o.mrpt_max_speed_mps) : std::string("as shipped"))
+			  << "), P3-DX footprint within the collision disc, "
 			  << (o.mrpt_reverse ? "all PTGs (backward one included)" : "forward PTGs only") << ", "
-			  << (o.mrpt_laser_only ? "laser only" : "laser + sonar echoes") << ", "
+			  << (o.mrpt_sonar ? "laser + sonar echoes" : "laser only") << ", "
 			  << (o.mrpt_raw_scan ? "obstacles in the frame they were sensed in" : "obstacles moved into the current robot frame")
 			  << ", target reached within 0.2 m\n";
 	const auto runs = runAll(pairs, o);

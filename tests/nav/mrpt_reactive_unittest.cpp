@@ -8,6 +8,10 @@
 #include <hslam/sim/scene.h>
 #include <hslam/testing/test_paths.h>
 #include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/core/Clock.h>
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservationRange.h>
 
 #include <cmath>
 #include <filesystem>
@@ -110,4 +114,44 @@ TEST(MrptReactive, ConfigKeepsTheForwardPtgsAndTheP3dxFootprint)
 	o.forward_ptgs_only = false;
 	const mrpt::config::CConfigFileMemory stock(sim::mrptReactiveConfig(stockConfig(), o));
 	EXPECT_EQ(stock.read_int("CReactiveNavigationSystem", "PTG_COUNT", 0), 3);
+}
+
+TEST(MrptReactive, ObstaclesAreMovedIntoTheCurrentRobotFrame)
+{
+	const double origin = 1700000000.0;
+	mrpt::obs::CObservation2DRangeScan scan;
+	scan.aperture = static_cast<float>(M_PI);
+	scan.resizeScan(181);
+	for (size_t i = 0; i < 181; ++i) scan.setScanRangeValidity(i, false);
+	scan.setScanRange(90, 1.0f);  // straight ahead, 1 m
+	scan.setScanRangeValidity(90, true);
+	scan.timestamp = mrpt::Clock::fromDouble(origin + 0.0);
+	mrpt::obs::CObservationRange sonar;
+	sonar.maxSensorDistance = 5;
+	mrpt::obs::CObservationRange::TMeasurement m;
+	m.sensorPose = mrpt::math::TPose3D(0.1, 0, 0, 0, 0, 0);
+	m.sensedDistance = 0.5f;
+	sonar.sensedData.push_back(m);
+	sonar.timestamp = scan.timestamp;
+	for (bool compensate : {true, false})
+	{
+		sim::CSimRobot2NavInterface robot(origin, compensate, true);
+		robot.setInput({0.0, {2.0, 1.0, 0.0}, &scan, &sonar});
+		robot.setInput({0.1, {2.1, 1.0, 0.0}, &scan, &sonar});  // 0.1 m ahead since both were sensed
+		mrpt::maps::CSimplePointsMap obstacles;
+		mrpt::system::TTimeStamp stamp;
+		ASSERT_TRUE(robot.senseObstacles(obstacles, stamp));
+		ASSERT_EQ(obstacles.size(), 2u);
+		const double shift = compensate ? 0.1 : 0.0;
+		EXPECT_NEAR(obstacles.getPointsBufferRef_x()[0], 1.0 - shift, 1e-6);  // laser
+		EXPECT_NEAR(obstacles.getPointsBufferRef_y()[0], 0.0, 1e-6);
+		EXPECT_NEAR(obstacles.getPointsBufferRef_x()[1], 0.6 - shift, 1e-6);  // sonar echo on its axis
+		mrpt::math::TPose2D pose;
+		mrpt::math::TTwist2D vel;
+		mrpt::math::TPose2D odo;
+		std::string frame;
+		ASSERT_TRUE(robot.getCurrentPoseAndSpeeds(pose, vel, stamp, odo, frame));
+		EXPECT_NEAR(vel.vx, 1.0, 1e-9);  // 0.1 m in 0.1 s
+		EXPECT_NEAR(robot.getNavigationTime(), 0.1, 1e-12);
+	}
 }

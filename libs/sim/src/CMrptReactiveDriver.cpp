@@ -56,6 +56,13 @@ void writeP3dxFootprint(mrpt::config::CConfigFileMemory& cfg, double r)
 	cfg.write(kPtgSection, "RobotModel_shape2D_xs", mrpt::format("%.4f %.4f %.4f %.4f", rear, front, front, rear));
 	cfg.write(kPtgSection, "RobotModel_shape2D_ys", mrpt::format("%.4f %.4f %.4f %.4f", side, side, -side, -side));
 }
+/** Every speed limit of the navigator and its PTGs to v (m/s). */
+void writeMaxSpeed(mrpt::config::CConfigFileMemory& cfg, double v)
+{
+	cfg.write("CAbstractPTGBasedReactive", "robotMax_V_mps", v);
+	const int count = cfg.read_int(kPtgSection, "PTG_COUNT", 0, true);
+	for (int i = 0; i < count; ++i) cfg.write(kPtgSection, mrpt::format("PTG%d_v_max_mps", i), v);
+}
 }  // namespace
 
 std::string mrptReactiveConfig(const std::string& configText, const TMrptReactiveOptions& o)
@@ -68,6 +75,7 @@ std::string mrptReactiveConfig(const std::string& configText, const TMrptReactiv
 	cfg.write("CAbstractPTGBasedReactive", "ptg_cache_files_directory", o.ptg_cache_dir);
 	if (o.p3dx_footprint) writeP3dxFootprint(cfg, o.footprint_min_radius_m);
 	if (o.forward_ptgs_only) dropReversePtgs(cfg);
+	if (o.max_speed_mps > 0) writeMaxSpeed(cfg, o.max_speed_mps);
 	std::string out;
 	cfg.getContent(out);
 	return out;

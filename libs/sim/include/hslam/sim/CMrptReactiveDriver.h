@@ -42,7 +42,8 @@ struct TMrptReactiveOptions
 	double footprint_min_radius_m = 0.2;  //!< the footprint is widened to contain this disc (TClosedLoopOptions::collision_radius_m)
 	bool forward_ptgs_only = true;  //!< leave out the PTGs with K < 0 (backward motion; stock: PTG2)
 	bool compensate_scan_age = true;  //!< obstacles moved into the current robot frame (CSimRobot2NavInterface)
-	bool use_sonar = true;  //!< sonar echoes as obstacle points too (CSimRobot2NavInterface)
+	double max_speed_mps = 0;  //!< > 0: robotMax_V_mps and every PTG's v_max set to this (stock: 1.0); changes the PTGs, use its own ptg_cache_dir
+	bool use_sonar = false;  //!< sonar echoes as obstacle points too (CSimRobot2NavInterface); default: the laser only
 	std::string ptg_cache_dir = ".";  //!< where MRPT writes/reads ReacNavGrid_*.dat.gz
 };
 

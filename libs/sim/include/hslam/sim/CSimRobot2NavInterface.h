@@ -36,7 +36,7 @@ class CSimRobot2NavInterface : public mrpt::nav::CRobot2NavInterface
    public:
 	/** `clockOrigin_s`: UNIX time of the simulation start (TSimulationOptions::start_time_s),
 	 * so that pose and scan timestamps share one clock. */
-	CSimRobot2NavInterface(double clockOrigin_s, bool compensateScanAge = true, bool useSonar = true);
+	CSimRobot2NavInterface(double clockOrigin_s, bool compensateScanAge = true, bool useSonar = false);
 
 	/** The closed loop's input of this control step (the scan is copied as points). */
 	void setInput(const TControlInput& in);
