@@ -72,7 +72,6 @@ std::string mrptReactiveConfig(const std::string& configText, const TMrptReactiv
 		throw std::invalid_argument("MRPT holonomic method '" + m + "': expected CHolonomicND, CHolonomicVFF or CHolonomicFullEval");
 	mrpt::config::CConfigFileMemory cfg(configText);
 	cfg.write("CAbstractPTGBasedReactive", "holonomic_method", m);
-	cfg.write("CAbstractPTGBasedReactive", "ptg_cache_files_directory", o.ptg_cache_dir);
 	if (o.p3dx_footprint) writeP3dxFootprint(cfg, o.footprint_min_radius_m);
 	if (o.forward_ptgs_only) dropReversePtgs(cfg);
 	if (o.max_speed_mps > 0) writeMaxSpeed(cfg, o.max_speed_mps);
@@ -91,6 +90,8 @@ CMrptReactiveDriver::CMrptReactiveDriver(const std::string& configText, const TM
 	m_nav = std::make_unique<CQuietReactiveNavigator>(*m_robot);
 	m_nav->setMinLoggingLevel(mrpt::system::LVL_ERROR);
 	m_nav->loadConfigFile(mrpt::config::CConfigFileMemory(mrptReactiveConfig(configText, o)));
+	// Not read from the INI by MRPT 2.5: set after loading (MRPT's default "." is the working directory).
+	m_nav->params_abstract_ptg_navigator.ptg_cache_files_directory = o.ptg_cache_dir;
 	m_nav->initialize();
 }
 
