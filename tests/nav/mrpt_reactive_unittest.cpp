@@ -42,7 +42,9 @@ TRun driveMrpt(const std::string& method, const std::string& sceneText, const mr
 {
 	sim::TMrptReactiveOptions o;
 	o.holonomic_method = method;
-	o.ptg_cache_dir = std::string(HSLAM_BINARY_DIR) + "/mrpt-ptg-cache";
+	// One folder per test: ctest may run tests in parallel and MRPT names its grid files by PTG index only.
+	o.ptg_cache_dir = std::string(HSLAM_BINARY_DIR) + "/mrpt-ptg-cache/" +
+					  ::testing::UnitTest::GetInstance()->current_test_info()->name();
 	std::filesystem::create_directories(o.ptg_cache_dir);
 	const auto config = sim::closedLoopConfig(start, 1);
 	sim::CSimulator simulator(config, sim::parseSceneText(sceneText, "test"));
