@@ -10,6 +10,7 @@
  * target, minimum clearance, CPU per control step; then per world; then
  * key=value lines. Progress on stderr. */
 #include <hslam/common/data_paths.h>
+#include <hslam/common/version.h>
 #include <hslam/sim/CMrptReactiveDriver.h>
 #include <hslam/sim/CSubsumptionDriver.h>
 #include <hslam/sim/free_space.h>
@@ -278,7 +279,7 @@ TNavBenchOptions parseOptions(int argc, char** argv, bool& help)
 {
 	TCLAP::CmdLine cmd("hslam-bench nav: our subsumption controller vs MRPT's reactive navigator (ND, VFF, FullEval) "
 					   "on sim::benchmarkScenarios",
-					   ' ', "0.1");
+					   ' ', common::versionText());
 	TCLAP::UnlabeledValueArg<std::string> suite("suite", "nav", true, "", "suite", cmd);
 	TCLAP::ValueArg<int> perWorld("", "pairs-per-world", "start/target pairs per world (default 13)", false, 13, "N", cmd);
 	TCLAP::ValueArg<double> timeout("", "timeout", "simulated seconds per run (default 180)", false, 180, "s", cmd);

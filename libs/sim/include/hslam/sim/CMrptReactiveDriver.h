@@ -11,7 +11,8 @@
  * closed loop's collision disc, so that MRPT's collision-free is ours), the
  * reverse PTGs left out (our P3-DX senses ahead only: the LMS200's 180 deg
  * and the front sonar ring; MRPT keeps no obstacle memory, so a backward
- * path is planned through space no sensor sees), the directory where
+ * path is planned through space no sensor sees), optionally one speed cap
+ * for the navigator and its PTGs (stock: 1 m/s, 60 deg/s), the directory where
  * MRPT caches its PTG collision grids (MRPT's own file I/O; building the
  * grids takes seconds, loading them a fraction). The navigator is initialised
  * (PTGs built or loaded) in the constructor, so control() times one
