@@ -107,6 +107,10 @@ int runPipelineSuite(int argc, char** argv);
  * (bench_graph.cpp); parses its own options from argv. */
 int runGraphSuite(int argc, char** argv);
 
+/** Our subsumption controller vs MRPT's reactive navigator (ND, VFF,
+ * FullEval) on the simulated nav scenarios (bench_nav.cpp); own options. */
+int runNavSuite(int argc, char** argv);
+
 /** ARCOS parser, driver and recorders against the emulators (bench_hwdrivers.cpp). */
 int runHwdriversSuite(int repetitions);
 

@@ -11,6 +11,7 @@
  *   hslam-bench hwdrivers [--repetitions N]
  *   hslam-bench pipeline [-r RAWLOG ...] [-g GROUND_TRUTH ...] [-n N]   (own options: bench_pipeline.cpp)
  *   hslam-bench graph [-r RAWLOG -g GROUND_TRUTH ...] [--max-keyframes N]   (own options: bench_graph.cpp)
+ *   hslam-bench nav [--pairs-per-world N] [--methods ours,mrpt_nd,...]  (own options: bench_nav.cpp)
  */
 #include <hslam/common/version.h>
 #include "bench_common.h"
@@ -21,8 +22,8 @@
 
 int main(int argc, char** argv)
 {
-	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, grid-range, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers, pipeline, graph)", ' ', hslam::common::versionText());
-	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid, grid-range, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers, pipeline, graph",
+	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, grid-range, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers, pipeline, graph, nav)", ' ', hslam::common::versionText());
+	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid, grid-range, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers, pipeline, graph, nav (pipeline, graph, nav: hslam-bench <suite> --help)",
 												true, "", "suite", cmd);
 	TCLAP::MultiArg<std::string> rawlogs("r", "rawlog",
 										 "rawlog(s) with laser scans and odometry (default: MRPT's sample rawlog)",
@@ -41,6 +42,7 @@ int main(int argc, char** argv)
 	{
 		if (argc > 1 && std::string(argv[1]) == "pipeline") return hslam::bench::runPipelineSuite(argc, argv);
 		if (argc > 1 && std::string(argv[1]) == "graph") return hslam::bench::runGraphSuite(argc, argv);
+		if (argc > 1 && std::string(argv[1]) == "nav") return hslam::bench::runNavSuite(argc, argv);
 		if (!cmd.parse(argc, argv)) return 0;  // --help or --version was printed
 		if (suite.getValue() == "lines") return hslam::bench::runLinesSuite(rawlogs.getValue(), std::max(1, repetitions.getValue()));
 		if (suite.getValue() == "grid-range")
@@ -58,7 +60,7 @@ int main(int argc, char** argv)
 												 config.getValue());
 		if (suite.getValue() == "hwdrivers") return hslam::bench::runHwdriversSuite(std::max(1, repetitions.getValue()));
 		std::cerr << "hslam-bench: unknown suite '" << suite.getValue()
-				  << "' (available: grid, grid-range, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers)\n";
+				  << "' (available: grid, grid-range, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers, pipeline, graph, nav)\n";
 		return 1;
 	}
 	catch (const TCLAP::ArgException& e)

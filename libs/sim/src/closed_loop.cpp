@@ -74,9 +74,11 @@ TClosedLoopResult runClosedLoop(CSimulator& sim, IClosedLoopController& controll
 			res.path.push_back({t, truth, sim.robot().odometryVelocity().vx, clearance});
 			nextSample_s += o.path_sample_period_s;
 		}
+		const double staticClearance = clearance_m(sim.scene().world, {truth.x, truth.y}, false);
+		res.min_static_clearance_m = std::min(res.min_static_clearance_m, staticClearance);
 		if (clearance < o.collision_radius_m)
 		{
-			if (clearance_m(sim.scene().world, {truth.x, truth.y}, false) < o.collision_radius_m)
+			if (staticClearance < o.collision_radius_m)
 				res.collided = true;
 			else if (tick % controlTicks == 0)
 				++res.person_contacts;

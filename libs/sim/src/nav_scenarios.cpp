@@ -3,6 +3,7 @@
 #include <hslam/sim/nav_scenarios.h>
 #include <hslam/sim/scene.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <random>
@@ -34,13 +35,23 @@ std::vector<TNavScenario> thesisTrials(const std::string& dir)
 namespace
 {
 /** Random pairs of free points of a world (static geometry), fixed seed;
- * `freeSeed` is a point known to lie in the world's free space. */
+ * `freeSeeds` are points known to lie in the world's free space, one per
+ * region whose connection is narrower than 2 min_clearance_m (the doorway's
+ * 0.9 m door cuts its free space at 0.6 m clearance into two rooms). */
 std::vector<TNavScenario> drawPairs(const std::string& name, const std::string& scene, const TScenarioDrawOptions& o,
-									unsigned seed, const mrpt::math::TPoint2D& freeSeed,
+									unsigned seed, const std::vector<mrpt::math::TPoint2D>& freeSeeds,
 									bool (*accept)(const mrpt::math::TPoint2D&, const mrpt::math::TPoint2D&))
 {
 	const TScene sc = loadSceneFile(scene);
-	const auto cells = CFreeSpaceGrid(sc.world, freeSeed, o.min_clearance_m).freeCells();
+	std::vector<mrpt::math::TPoint2D> cells;
+	std::vector<CFreeSpaceGrid> regions;
+	for (const auto& freeSeed : freeSeeds)
+	{
+		if (std::any_of(regions.begin(), regions.end(), [&](const auto& r) { return r.isFree(freeSeed); })) continue;
+		regions.emplace_back(sc.world, freeSeed, o.min_clearance_m);
+		const auto more = regions.back().freeCells();
+		cells.insert(cells.end(), more.begin(), more.end());
+	}
 	if (cells.empty()) throw std::runtime_error(scene + ": no free space around the seed point");
 	std::mt19937_64 rng(seed);
 	std::uniform_int_distribution<size_t> pick(0, cells.size() - 1);
@@ -73,10 +84,10 @@ std::vector<TNavScenario> benchmarkScenarios(const std::string& dir, const TScen
 	auto path = [&](const char* f) { return (std::filesystem::path(dir) / f).string(); };
 	std::vector<TNavScenario> all;
 	auto add = [&](std::vector<TNavScenario> v) { all.insert(all.end(), v.begin(), v.end()); };
-	add(drawPairs("lab", path("nav-lab.scene"), o, o.seed + 1, {1.0, 1.0}, nullptr));
-	add(drawPairs("floor", path("floor.scene"), o, o.seed + 2, {1.25, 1.25}, nullptr));
-	add(drawPairs("cluttered", path("nav-cluttered.scene"), o, o.seed + 3, {0.7, 0.7}, nullptr));
-	add(drawPairs("doorway", path("nav-doorway.scene"), o, o.seed + 4, {1.0, 1.0}, acrossTheDoor));
+	add(drawPairs("lab", path("nav-lab.scene"), o, o.seed + 1, {{1.0, 1.0}}, nullptr));
+	add(drawPairs("floor", path("floor.scene"), o, o.seed + 2, {{1.25, 1.25}}, nullptr));
+	add(drawPairs("cluttered", path("nav-cluttered.scene"), o, o.seed + 3, {{0.7, 0.7}}, nullptr));
+	add(drawPairs("doorway", path("nav-doorway.scene"), o, o.seed + 4, {{1.0, 1.0}, {9.0, 4.5}}, acrossTheDoor));
 	// U-trap: the hand-placed crossings (start west facing the U's mouth,
 	// target east behind its base), then random pairs.
 	const std::string u = path("nav-utrap.scene");
@@ -84,7 +95,7 @@ std::vector<TNavScenario> benchmarkScenarios(const std::string& dir, const TScen
 		all.push_back({"utrap", u, mrpt::math::TPose2D(1.5, y, 0.0), {{8.5, 8.0 - y}}});
 	TScenarioDrawOptions rest = o;
 	rest.pairs_per_world = std::max(0, o.pairs_per_world - 3);
-	add(drawPairs("utrap", u, rest, o.seed + 5, {1.0, 1.0}, notInsideTheU));
+	add(drawPairs("utrap", u, rest, o.seed + 5, {{1.0, 1.0}}, notInsideTheU));
 	return all;
 }
 

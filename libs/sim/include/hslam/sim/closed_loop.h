@@ -67,6 +67,7 @@ struct TClosedLoopResult
 	bool timed_out = false;
 	double path_length_m = 0, time_s = 0;
 	double min_clearance_m = 1e9;
+	double min_static_clearance_m = 1e9;  //!< to static obstacles only (people left out)
 	double cpu_s = 0;  //!< total CPU time inside control()
 	size_t control_steps = 0;
 	std::vector<TPathSample> path;

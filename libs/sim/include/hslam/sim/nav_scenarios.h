@@ -4,7 +4,9 @@
  * lab with walking people, office floor (floor.scene) with a walking person, cluttered room, U-shaped
  * trap, doorway). Pairs are drawn with a fixed seed from the free space of
  * each world (clearance >= min_clearance_m, start-target distance >=
- * min_distance_m), plus hand-placed pairs that cross the U and the door. */
+ * min_distance_m), plus hand-placed pairs that cross the U; the doorway's
+ * pairs join its two rooms, drawn from the free space of both (its 0.9 m door
+ * is narrower than 2 min_clearance_m, so one seed reaches one room only). */
 #pragma once
 
 #include <hslam/sim/CSimulator.h>

@@ -1,0 +1,362 @@
+/* hslam-bench nav: our subsumption controller (libs/nav, thesis 4.2) against
+ * MRPT 2.5's reactive navigator (CReactiveNavigationSystem, stock
+ * reactive2d_config.ini, holonomic methods ND / VFF / FullEval) in the same
+ * run, on the same start/target pairs (sim::benchmarkScenarios: lab with
+ * walking people, office floor, cluttered room, doorway, U-trap), each driving
+ * our simulated P3-DX through sim::runClosedLoop (same sensors, same control
+ * period, same scoring). Per method: success rate, collisions with static
+ * obstacles (contacts by walking people apart), path length over the shortest
+ * collision-free path (8-connected Dijkstra on sim::CFreeSpaceGrid), time to
+ * target, minimum clearance, CPU per control step; then per world; then
+ * key=value lines. Progress on stderr. */
+#include <hslam/common/data_paths.h>
+#include <hslam/common/version.h>
+#include <hslam/sim/CMrptReactiveDriver.h>
+#include <hslam/sim/CSubsumptionDriver.h>
+#include <hslam/sim/free_space.h>
+#include <hslam/sim/nav_scenarios.h>
+#include <hslam/sim/scene.h>
+#include "bench_common.h"
+
+#include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/core/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace hslam::bench
+{
+namespace
+{
+struct TNavBenchOptions
+{
+	std::string scene_dir = "config_ini/sim-worlds";
+	std::string mrpt_config = sim::kMrptReactive2dConfig;
+	std::string ptg_cache_dir;  //!< empty: <temp>/hslam-mrpt-ptg-cache
+	sim::TScenarioDrawOptions draw;
+	sim::TClosedLoopOptions loop;
+	std::vector<std::string> methods{"ours", "mrpt_nd", "mrpt_vff", "mrpt_fulleval"};
+	std::vector<std::string> worlds;  //!< empty: every world
+	bool mrpt_raw_scan = false;  //!< hand MRPT the latest scan as is (TMrptReactiveOptions::compensate_scan_age)
+	bool mrpt_reverse = false;
+	double mrpt_max_speed_mps = 0;  //!< > 0: MRPT's speed limits to this (TMrptReactiveOptions::max_speed_mps)
+	bool mrpt_sonar = false;  //!< sonar echoes as points for MRPT too (TMrptReactiveOptions::use_sonar)  //!< keep the stock config's backward PTG (TMrptReactiveOptions::forward_ptgs_only)
+	double shortest_path_clearance_m = 0.2;  //!< the collision radius: the shortest path a disc robot can take
+};
+
+/** One closed-loop run of one method on one pair. */
+struct TNavRun
+{
+	std::string method, world;
+	sim::TClosedLoopResult result;
+	double final_distance_m = 0, shortest_m = NAN;
+	mrpt::math::TPose2D start, end;
+	bool success = false;
+};
+
+std::string holonomicMethod(const std::string& method)
+{
+	if (method == "mrpt_nd") return "CHolonomicND";
+	if (method == "mrpt_vff") return "CHolonomicVFF";
+	if (method == "mrpt_fulleval") return "CHolonomicFullEval";
+	throw std::invalid_argument("unknown method '" + method + "' (ours, mrpt_nd, mrpt_vff, mrpt_fulleval)");
+}
+
+std::string readText(const std::string& path)
+{
+	std::ifstream f(path);
+	if (!f) throw std::runtime_error(path + ": cannot read");
+	std::stringstream ss;
+	ss << f.rdbuf();
+	return ss.str();
+}
+
+std::unique_ptr<sim::IClosedLoopController> makeController(const std::string& method, const sim::TNavScenario& s,
+														   const TNavBenchOptions& o, const std::string& mrptIni,
+														   double clockOrigin_s)
+{
+	if (method == "ours") return std::make_unique<sim::CSubsumptionDriver>(nav::TSubsumptionOptions(), s.targets);
+	sim::TMrptReactiveOptions m;
+	m.holonomic_method = holonomicMethod(method);
+	m.ptg_cache_dir = o.ptg_cache_dir;
+	m.forward_ptgs_only = !o.mrpt_reverse;
+	m.footprint_min_radius_m = o.loop.collision_radius_m;
+	m.compensate_scan_age = !o.mrpt_raw_scan;
+	m.use_sonar = o.mrpt_sonar;
+	m.max_speed_mps = o.mrpt_max_speed_mps;
+	return std::make_unique<sim::CMrptReactiveDriver>(mrptIni, m, s.targets.back(), clockOrigin_s);
+}
+
+TNavRun runOne(const std::string& method, const sim::TNavScenario& s, const sim::TScene& scene,
+			   const TNavBenchOptions& o, const std::string& mrptIni)
+{
+	const auto config = sim::closedLoopConfig(s.start, 1);
+	sim::CSimulator simulator(config, scene);
+	auto controller = makeController(method, s, o, mrptIni, config.simulation.start_time_s);
+	TNavRun run{method, s.world, sim::runClosedLoop(simulator, *controller, o.loop)};
+	const auto end = simulator.robot().truePose();
+	run.final_distance_m = std::hypot(end.x - s.targets.back().x, end.y - s.targets.back().y);
+	run.start = s.start;
+	run.end = end;
+	run.success = run.result.success() && run.final_distance_m < 0.25;
+	return run;
+}
+
+std::string outcome(const TNavRun& r)
+{
+	std::ostringstream ss;
+	ss << std::fixed << std::setprecision(1);
+	if (r.success) ss << "reached in " << r.result.time_s << " s, path " << r.result.path_length_m << " m";
+	else if (r.result.collided)
+		ss << "COLLISION at " << r.result.time_s << " s at (" << std::setprecision(2) << r.end.x << ", " << r.end.y
+		   << ", " << std::setprecision(0) << r.end.phi * 180 / M_PI << " deg)" << std::setprecision(1);
+	else if (r.result.timed_out) ss << "timeout, " << r.final_distance_m << " m short";
+	else if (r.result.failed) ss << "gave up at " << r.result.time_s << " s, " << r.final_distance_m << " m short";
+	else ss << "stopped " << r.final_distance_m << " m from the target";
+	if (r.result.person_contacts) ss << " (" << r.result.person_contacts << " person contacts)";
+	ss << std::setprecision(2) << "  [start " << r.start.x << " " << r.start.y << " " << std::setprecision(0)
+	   << r.start.phi * 180 / M_PI << " deg]";
+	return ss.str();
+}
+
+/** Every method on every pair; the shortest path is computed once per pair. */
+std::vector<TNavRun> runAll(const std::vector<sim::TNavScenario>& pairs, const TNavBenchOptions& o)
+{
+	const std::string mrptIni = readText(o.mrpt_config);
+	std::map<std::string, sim::TScene> scenes;
+	std::map<std::string, std::unique_ptr<sim::CFreeSpaceGrid>> free;
+	std::vector<TNavRun> runs;
+	for (size_t i = 0; i < pairs.size(); ++i)
+	{
+		const auto& s = pairs[i];
+		if (!scenes.count(s.scene_file)) scenes[s.scene_file] = sim::loadSceneFile(s.scene_file);
+		const auto& scene = scenes[s.scene_file];
+		auto& grid = free[s.scene_file];
+		if (!grid) grid = std::make_unique<sim::CFreeSpaceGrid>(scene.world, mrpt::math::TPoint2D(s.start.x, s.start.y),
+																 o.shortest_path_clearance_m);
+		const double shortest = grid->shortestPath_m({s.start.x, s.start.y}, s.targets.back());
+		for (const auto& m : o.methods)
+		{
+			runs.push_back(runOne(m, s, scene, o, mrptIni));
+			runs.back().shortest_m = shortest;
+			std::cerr << "[" << i + 1 << "/" << pairs.size() << "] " << s.world << " " << m << ": "
+					  << outcome(runs.back()) << "\n";
+		}
+	}
+	return runs;
+}
+
+/** Figures of one method over a set of runs. */
+struct TNavStats
+{
+	int runs = 0, successes = 0, collisions = 0, person_contacts = 0, timeouts = 0, gave_up = 0;
+	double path_ratio = NAN, time_s = NAN, min_clearance_m = NAN, median_min_clearance_m = NAN, cpu_ms = NAN;
+	double successRate() const { return runs ? double(successes) / runs : 0; }
+};
+
+double mean(const std::vector<double>& v)
+{
+	if (v.empty()) return NAN;
+	double s = 0;
+	for (double x : v) s += x;
+	return s / v.size();
+}
+
+double median(std::vector<double> v)
+{
+	if (v.empty()) return NAN;
+	std::sort(v.begin(), v.end());
+	return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+TNavStats statsOf(const std::vector<TNavRun>& runs, const std::string& method, const std::string& world = "")
+{
+	TNavStats st;
+	std::vector<double> ratio, time, clearance;
+	double cpu = 0, steps = 0;
+	for (const auto& r : runs)
+	{
+		if (r.method != method || (!world.empty() && r.world != world)) continue;
+		++st.runs;
+		st.successes += r.success;
+		st.collisions += r.result.collided;
+		st.person_contacts += r.result.person_contacts;
+		st.timeouts += r.result.timed_out;
+		st.gave_up += r.result.failed;
+		clearance.push_back(r.result.min_static_clearance_m);
+		cpu += r.result.cpu_s;
+		steps += r.result.control_steps;
+		if (!r.success) continue;
+		if (std::isfinite(r.shortest_m) && r.shortest_m > 0) ratio.push_back(r.result.path_length_m / r.shortest_m);
+		time.push_back(r.result.time_s);
+	}
+	st.path_ratio = mean(ratio);
+	st.time_s = mean(time);
+	st.min_clearance_m = clearance.empty() ? NAN : *std::min_element(clearance.begin(), clearance.end());
+	st.median_min_clearance_m = median(clearance);
+	st.cpu_ms = steps ? 1e3 * cpu / steps : NAN;
+	return st;
+}
+
+void printMethodTable(const std::vector<TNavRun>& runs, const TNavBenchOptions& o)
+{
+	std::cout << "\n| method | success | collisions (static) | person contacts | timeouts / gave up | path / shortest "
+				 "| time to target | min clearance to static obstacles (worst / median) | CPU / control step |\n"
+			  << "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n"
+			  << std::fixed;
+	for (const auto& m : o.methods)
+	{
+		const auto s = statsOf(runs, m);
+		std::cout << "| " << m << " | " << s.successes << "/" << s.runs << " (" << std::setprecision(0)
+				  << 100 * s.successRate() << " %) | " << s.collisions << " | " << s.person_contacts << " | "
+				  << s.timeouts << " / " << s.gave_up << " | " << std::setprecision(2) << s.path_ratio << " | "
+				  << std::setprecision(1) << s.time_s << " s | " << std::setprecision(2) << s.min_clearance_m << " / "
+				  << s.median_min_clearance_m << " m | " << std::setprecision(2) << s.cpu_ms << " ms |\n";
+	}
+	std::cout << "(path / shortest and time: means over the successful runs; shortest: 8-connected path keeping "
+			  << o.shortest_path_clearance_m << " m from static obstacles)\n";
+}
+
+std::vector<std::string> worldsOf(const std::vector<sim::TNavScenario>& pairs)
+{
+	std::vector<std::string> w;
+	for (const auto& s : pairs)
+		if (std::find(w.begin(), w.end(), s.world) == w.end()) w.push_back(s.world);
+	return w;
+}
+
+void printWorldTable(const std::vector<TNavRun>& runs, const std::vector<std::string>& worlds,
+					 const TNavBenchOptions& o)
+{
+	std::cout << "\nsuccess (collisions) per world:\n\n| world |";
+	for (const auto& m : o.methods) std::cout << " " << m << " |";
+	std::cout << "\n| --- |";
+	for (size_t i = 0; i < o.methods.size(); ++i) std::cout << " --- |";
+	std::cout << "\n";
+	for (const auto& w : worlds)
+	{
+		std::cout << "| " << w << " |";
+		for (const auto& m : o.methods)
+		{
+			const auto s = statsOf(runs, m, w);
+			std::cout << " " << s.successes << "/" << s.runs << " (" << s.collisions << ") |";
+		}
+		std::cout << "\n";
+	}
+}
+
+void printKeyValues(const std::vector<TNavRun>& runs, const std::vector<std::string>& worlds,
+					const TNavBenchOptions& o, size_t pairs)
+{
+	std::cout << "\nnav_pairs=" << pairs << "\nnav_worlds=" << worlds.size() << "\n" << std::setprecision(4);
+	double best = -1;
+	std::string bestMethod = "none";
+	for (const auto& m : o.methods)
+	{
+		const auto s = statsOf(runs, m);
+		if (m != "ours" && s.successRate() > best) best = s.successRate(), bestMethod = m;
+		std::cout << "nav_success_rate_" << m << "=" << s.successRate() << "\nnav_collisions_" << m << "="
+				  << s.collisions << "\nnav_person_contacts_" << m << "=" << s.person_contacts << "\nnav_timeouts_"
+				  << m << "=" << s.timeouts << "\nnav_gave_up_" << m << "=" << s.gave_up << "\nnav_path_ratio_" << m
+				  << "=" << s.path_ratio << "\nnav_time_to_target_s_" << m << "=" << s.time_s
+				  << "\nnav_min_clearance_m_" << m << "=" << s.min_clearance_m << "\nnav_cpu_ms_per_step_" << m
+				  << "=" << s.cpu_ms << "\n";
+		for (const auto& w : worlds)
+			std::cout << "nav_success_rate_" << m << "_" << w << "=" << statsOf(runs, m, w).successRate() << "\n";
+	}
+	if (best >= 0) std::cout << "nav_success_rate_mrpt_best=" << best << "\nnav_mrpt_best_method=" << bestMethod << "\n";
+}
+
+TNavBenchOptions parseOptions(int argc, char** argv, bool& help)
+{
+	TCLAP::CmdLine cmd("hslam-bench nav: our subsumption controller vs MRPT's reactive navigator (ND, VFF, FullEval) "
+					   "on sim::benchmarkScenarios",
+					   ' ', common::versionText());
+	TCLAP::UnlabeledValueArg<std::string> suite("suite", "nav", true, "", "suite", cmd);
+	TCLAP::ValueArg<int> perWorld("", "pairs-per-world", "start/target pairs per world (default 13)", false, 13, "N", cmd);
+	TCLAP::ValueArg<double> timeout("", "timeout", "simulated seconds per run (default 180)", false, 180, "s", cmd);
+	TCLAP::ValueArg<std::string> methods("", "methods", "comma list of ours, mrpt_nd, mrpt_vff, mrpt_fulleval (default all)",
+										 false, "ours,mrpt_nd,mrpt_vff,mrpt_fulleval", "list", cmd);
+	TCLAP::ValueArg<std::string> worlds("", "worlds", "comma list of worlds to run (default all: lab, floor, cluttered, doorway, utrap)",
+										false, "", "list", cmd);
+	TCLAP::ValueArg<std::string> scenes("", "scenes", "folder of the nav-*.scene worlds (default config_ini/sim-worlds)",
+										false, "config_ini/sim-worlds", "dir", cmd);
+	TCLAP::ValueArg<std::string> mrptConfig("", "mrpt-config", "MRPT reactive INI (default: the stock reactive2d_config.ini)",
+											false, sim::kMrptReactive2dConfig, "file.ini", cmd);
+	TCLAP::ValueArg<std::string> cache("", "ptg-cache", "folder for MRPT's PTG collision-grid cache (default <tmp>/hslam-mrpt-ptg-cache)",
+									   false, "", "dir", cmd);
+	TCLAP::SwitchArg reverse("", "mrpt-reverse", "keep the stock config's backward PTG (K = -1; default: forward PTGs only, "
+							 "the P3-DX senses ahead only)", cmd);
+	TCLAP::SwitchArg rawScan("", "mrpt-raw-scan", "hand MRPT the latest scan in the robot frame of its own time "
+							 "(default: moved into the current robot frame)", cmd);
+	TCLAP::SwitchArg sonar("", "mrpt-sonar", "MRPT senses sonar echoes (as points on the cone axes) besides the laser "
+						   "(default: the laser only)", cmd);
+	TCLAP::ValueArg<double> maxSpeed("", "mrpt-max-speed", "MRPT's robotMax_V_mps and PTG v_max (m/s; default: the config's, stock 1.0)",
+									 false, 0, "m/s", cmd);
+	TNavBenchOptions o;
+	help = !cmd.parse(argc, argv);
+	o.draw.pairs_per_world = std::max(1, perWorld.getValue());
+	o.loop.timeout_s = timeout.getValue();
+	o.scene_dir = common::resolveDataFile(scenes.getValue());
+	o.mrpt_config = mrptConfig.getValue();
+	o.mrpt_reverse = reverse.getValue();
+	o.mrpt_raw_scan = rawScan.getValue();
+	o.mrpt_sonar = sonar.getValue();
+	o.mrpt_max_speed_mps = maxSpeed.getValue();
+	o.ptg_cache_dir = cache.isSet() ? cache.getValue() : (fs::temp_directory_path() / "hslam-mrpt-ptg-cache").string();
+	// One cache folder per PTG set (MRPT names its grid files by PTG index only).
+	o.ptg_cache_dir += std::string(o.mrpt_reverse ? "/all-ptgs" : "/forward-ptgs") +
+					   (o.mrpt_max_speed_mps > 0 ? mrpt::format("-v%.2f", o.mrpt_max_speed_mps) : std::string());
+	std::stringstream ws(worlds.getValue());
+	for (std::string w; std::getline(ws, w, ',');)
+		if (!w.empty()) o.worlds.push_back(w);
+	o.methods.clear();
+	std::stringstream ss(methods.getValue());
+	for (std::string m; std::getline(ss, m, ',');)
+	{
+		if (m.empty()) continue;
+		if (m != "ours") holonomicMethod(m);  // throws on an unknown name
+		o.methods.push_back(m);
+	}
+	return o;
+}
+}  // namespace
+
+int runNavSuite(int argc, char** argv)
+{
+	bool help = false;
+	const auto o = parseOptions(argc, argv, help);
+	if (help) return 0;
+	fs::create_directories(o.ptg_cache_dir);
+	auto pairs = sim::benchmarkScenarios(o.scene_dir, o.draw);
+	if (!o.worlds.empty())
+		pairs.erase(std::remove_if(pairs.begin(), pairs.end(), [&](const sim::TNavScenario& s)
+								   { return std::find(o.worlds.begin(), o.worlds.end(), s.world) == o.worlds.end(); }),
+					pairs.end());
+	const auto worlds = worldsOf(pairs);
+	std::cout << "Suite nav: " << pairs.size() << " start/target pairs in " << worlds.size() << " worlds, "
+			  << o.methods.size() << " methods, timeout " << o.loop.timeout_s << " s (simulated), control period "
+			  << o.loop.control_period_s << " s, collision radius " << o.loop.collision_radius_m << " m\n"
+			  << "ours: libs/nav defaults (target seeking <= 0.3 m/s, eq. 33); MRPT: " << o.mrpt_config
+			  << " (holonomic parameters as shipped, speed limits "
+			  << (o.mrpt_max_speed_mps > 0 ? mrpt::format("%.2f m/s", o.mrpt_max_speed_mps) : std::string("as shipped"))
+			  << "), P3-DX footprint within the collision disc, "
+			  << (o.mrpt_reverse ? "all PTGs (backward one included)" : "forward PTGs only") << ", "
+			  << (o.mrpt_sonar ? "laser + sonar echoes" : "laser only") << ", "
+			  << (o.mrpt_raw_scan ? "obstacles in the frame they were sensed in" : "obstacles moved into the current robot frame")
+			  << ", target reached within 0.2 m\n";
+	const auto runs = runAll(pairs, o);
+	printMethodTable(runs, o);
+	printWorldTable(runs, worlds, o);
+	printKeyValues(runs, worlds, o, pairs.size());
+	return 0;
+}
+}  // namespace hslam::bench
