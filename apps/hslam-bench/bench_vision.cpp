@@ -86,7 +86,7 @@ void printFoeRow(const std::string& name, const TFoeRow& r)
 			  << vision::medianOf(r.peer) << std::setw(8) << r.peer_invalid << "\n";
 }
 
-/** The learned model as hslam-vision-train --synthetic trains it (thesis camera, 640 x 480). */
+/** The learned model as hslam-vision-train --synthetic 30 trains it (640 x 480). */
 vision::CLearnedRotationFlow trainLearned(const vision::TMountedCamera& camera)
 {
 	vision::TRotationTrainingOptions o;
@@ -112,9 +112,9 @@ std::map<std::string, TFoeRow> runFoeTables(const vision::IRotationFlowModel& le
 		const auto cam = benchCamera(w, h);
 		const vision::CAnalyticRotationFlow analytic(cam);
 		const std::string size = std::to_string(w) + "x" + std::to_string(h);
-		row("plane_t_" + size, "plane " + size + " translation", planePairs(w, h, EPlaneMotion::translation, kPairs, 5),
+		row("plane_t_" + size, "plane " + size + " translation", planePairs(cam, EPlaneMotion::translation, kPairs, 5),
 			w, h, &analytic);
-		const auto tr = planePairs(w, h, EPlaneMotion::translation_rotation, kPairs, 6);
+		const auto tr = planePairs(cam, EPlaneMotion::translation_rotation, kPairs, 6);
 		row("plane_tr_none_" + size, "plane " + size + " transl.+rot., no removal", tr, w, h, nullptr);
 		row("plane_tr_" + size, "plane " + size + " transl.+rot., analytic", tr, w, h, &analytic);
 		if (w == 640) row("plane_tr_learned_" + size, "plane " + size + " transl.+rot., learned", tr, w, h, &learned);
@@ -125,6 +125,21 @@ std::map<std::string, TFoeRow> runFoeTables(const vision::IRotationFlowModel& le
 		if (w == 640) row("sim_tr_learned_" + size, "simulator " + size + " transl.+rot., learned", rtr, w, h, &learned);
 	}
 	return rows;
+}
+
+/** Diagnostic rows: the camera on the robot's axis (no lever arm), where the
+ * learned model has no lever-arm flow to absorb. */
+void runOnAxisRows(std::map<std::string, TFoeRow>& rows)
+{
+	auto cam = benchCamera(640, 480);
+	cam.sensorPose = vision::forwardCameraPose(0, 0, 0.45);
+	const auto learned = trainLearned(cam);
+	const vision::CAnalyticRotationFlow analytic(cam);
+	const auto tr = planePairs(cam, vision::EPlaneMotion::translation_rotation, kPairs, 6);
+	rows["axis_tr_analytic"] = scorePairs(tr, cam, &analytic, benchVisionOptions(640));
+	printFoeRow("plane 640x480 t.+r., camera on axis, analytic", rows["axis_tr_analytic"]);
+	rows["axis_tr_learned"] = scorePairs(tr, cam, &learned, benchVisionOptions(640));
+	printFoeRow("plane 640x480 t.+r., camera on axis, learned", rows["axis_tr_learned"]);
 }
 
 struct TResidual
@@ -152,12 +167,12 @@ TResidual rotationResiduals(const vision::TMountedCamera& camera, const vision::
 
 void printTimes(const std::vector<TStageTimes>& times)
 {
-	std::cout << "\nPer-frame time (ms; best of the repetitions per pair, mean over pairs)\n"
-			  << std::left << std::setw(10) << "size" << std::right << std::setw(9) << "detect" << std::setw(9)
+	std::cout << "\nPer-frame time (ms; one OpenCV thread; best of the repetitions per pair, mean over 10 pairs)\n"
+			  << std::left << std::setw(20) << "pairs" << std::right << std::setw(9) << "detect" << std::setw(9)
 			  << "track" << std::setw(10) << "rot anal" << std::setw(10) << "rot lrnd" << std::setw(8) << "FOE"
 			  << std::setw(8) << "cues" << std::setw(9) << "total" << std::setw(12) << "essential" << "\n";
 	for (const auto& t : times)
-		std::cout << std::left << std::setw(10) << (std::to_string(t.width) + "x" + std::to_string(t.height))
+		std::cout << std::left << std::setw(20) << (t.source + " " + std::to_string(t.width) + "x" + std::to_string(t.height))
 				  << std::right << std::fixed << std::setprecision(3) << std::setw(9) << t.detect_ms << std::setw(9)
 				  << t.track_ms << std::setw(10) << t.rotation_analytic_ms << std::setw(10) << t.rotation_learned_ms
 				  << std::setw(8) << t.foe_ms << std::setw(8) << t.cues_ms << std::setw(9) << t.total_ms()
@@ -173,6 +188,7 @@ void printKeyValues(std::map<std::string, TFoeRow>& rows, const TResidual& res, 
 			  << "\nfoe_error_translation_px_median=" << med("plane_t_640x480")
 			  << "\nfoe_error_no_removal_px_median=" << med("plane_tr_none_640x480")
 			  << "\nfoe_error_learned_px_median=" << med("plane_tr_learned_640x480")
+			  << "\nfoe_error_learned_on_axis_px_median=" << med("axis_tr_learned")
 			  << "\nfoe_error_320_px_median=" << med("plane_tr_320x240")
 			  << "\nfoe_error_sim_px_median=" << med("sim_tr_640x480")
 			  << "\nfoe_error_sim_translation_px_median=" << med("sim_t_640x480")
@@ -182,8 +198,8 @@ void printKeyValues(std::map<std::string, TFoeRow>& rows, const TResidual& res, 
 			  << "\nfoe_essential_sim_error_px_median=" << vision::medianOf(rows["sim_tr_640x480"].peer)
 			  << "\nrotation_residual_px_rms=" << res.analytic << "\nrotation_residual_learned_px_rms=" << res.learned
 			  << "\nrotation_residual_none_px_rms=" << res.raw << "\nvision_ms_per_frame=" << t[0].total_ms()
-			  << "\nvision_ms_per_frame_320=" << t[1].total_ms() << "\nessential_ms_per_frame=" << t[0].peer_ms
-			  << "\nessential_ms_per_frame_320=" << t[1].peer_ms << "\n";
+			  << "\nvision_ms_per_frame_320=" << t[1].total_ms() << "\nvision_ms_per_frame_plane=" << t[2].total_ms()
+			  << "\nessential_ms_per_frame=" << t[0].peer_ms << "\nessential_ms_per_frame_320=" << t[1].peer_ms << "\n";
 }
 }  // namespace
 
@@ -195,9 +211,16 @@ int runVisionSuite(int repetitions, const std::string& samplesDir)
 	std::cout << "training the learned rotation model (30 plane-warp turns, 640x480) ..." << std::endl;
 	const auto learned = trainLearned(camera);
 	auto rows = runFoeTables(learned);
+	runOnAxisRows(rows);
 	const TResidual res = rotationResiduals(camera, learned);
-	const std::vector<TStageTimes> times{measureStageTimes(640, 480, learned, 10, repetitions),
-										 measureStageTimes(320, 240, learned, 10, repetitions)};
+	using vision::EPlaneMotion;
+	const std::vector<TStageTimes> times{
+		measureStageTimes("simulator", renderedPairs(640, 480, true, kRenderedPairs, 8), learned, repetitions),
+		measureStageTimes("simulator", renderedPairs(320, 240, true, kRenderedPairs, 8), learned, repetitions),
+		measureStageTimes("plane", planePairs(benchCamera(640, 480), EPlaneMotion::translation_rotation, 10, 77), learned,
+						  repetitions),
+		measureStageTimes("plane", planePairs(benchCamera(320, 240), EPlaneMotion::translation_rotation, 10, 77), learned,
+						  repetitions)};
 	printTimes(times);
 	std::cout << "\n";
 	const bool cues = runVisionCuesPart(samplesDir + "/camera");

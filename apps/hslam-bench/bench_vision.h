@@ -34,15 +34,17 @@ TEssentialFoe essentialMatrixFoe(const std::vector<vision::TFlowVector>& tracks,
 
 /** Per-frame times (ms, best of `repetitions` per pair, mean over pairs) of
  * each stage and of the peer at one image size; printed as a table row. */
+struct TTruthPair;
 struct TStageTimes
 {
+	std::string source;  //!< "plane" or "simulator"
 	int width = 0, height = 0;
 	double detect_ms = 0, track_ms = 0, rotation_analytic_ms = 0, rotation_learned_ms = 0, foe_ms = 0, cues_ms = 0;
 	double peer_ms = 0;
 	double total_ms() const { return detect_ms + track_ms + rotation_analytic_ms + foe_ms + cues_ms; }
 };
-TStageTimes measureStageTimes(int width, int height, const vision::IRotationFlowModel& learned, int pairs,
-							  int repetitions);
+TStageTimes measureStageTimes(const std::string& source, const std::vector<TTruthPair>& pairs,
+							  const vision::IRotationFlowModel& learned, int repetitions);
 
 /** Camera cue vs laser leg tracks on a simulated sample (bench_vision_cues.cpp):
  * the batch pipeline with [dynamic_objects] camera_cue_evidence off and on.

@@ -15,9 +15,9 @@
 
 namespace hslam::bench
 {
-std::vector<TTruthPair> planePairs(int width, int height, vision::EPlaneMotion motion, int pairs, uint64_t seed)
+std::vector<TTruthPair> planePairs(const vision::TMountedCamera& camera, vision::EPlaneMotion motion, int pairs,
+								   uint64_t seed)
 {
-	const auto camera = benchCamera(width, height);
 	std::vector<TTruthPair> out;
 	for (int k = 0; k < pairs; ++k)
 	{

@@ -17,8 +17,9 @@ struct TTruthPair
 /** Scene of the simulated lab (relative to the worktree root). */
 inline const char* kLabScene = "config_ini/sim-worlds/lab.scene";
 
-/** Plane-warp pairs k = 0..pairs-1 of a scenario for the bench camera at width x height. */
-std::vector<TTruthPair> planePairs(int width, int height, vision::EPlaneMotion motion, int pairs, uint64_t seed);
+/** Plane-warp pairs k = 0..pairs-1 of a scenario seen by `camera`. */
+std::vector<TTruthPair> planePairs(const vision::TMountedCamera& camera, vision::EPlaneMotion motion, int pairs,
+								   uint64_t seed);
 
 /** Simulator frames of the static lab from random poses, forward 5-10 cm,
  * with a yaw change of 1-3 deg either way when `rotate`. */

@@ -1,9 +1,12 @@
 /* hslam-bench vision: time per frame of each stage of the camera branch
  * (vision::CFlowAnalyzer's stages called one by one) and of the peer
- * (cv::findEssentialMat + cv::recoverPose on the same tracks), on plane-warp
- * pairs of a robot moving along an arc. */
+ * (cv::findEssentialMat + cv::recoverPose on the same tracks), on given
+ * pairs (plane warps and simulator frames of a robot moving along an arc). */
 #include "bench_common.h"
 #include "bench_vision.h"
+#include "bench_vision_pairs.h"
+
+#include <opencv2/core/utility.hpp>
 
 namespace hslam::bench
 {
@@ -16,7 +19,7 @@ struct TPairTimes
 	double detect = 0, track = 0, analytic = 0, learned = 0, foe = 0, cues = 0, peer = 0;
 };
 
-TPairTimes timePair(const vision::TPlanePair& pair, double yaw_rad, const vision::TMountedCamera& camera,
+TPairTimes timePair(const TTruthPair& pair, double yaw_rad, const vision::TMountedCamera& camera,
 					const vision::IRotationFlowModel& learned, const vision::TVisionOptions& o, int reps)
 {
 	TPairTimes t;
@@ -46,26 +49,32 @@ TPairTimes timePair(const vision::TPlanePair& pair, double yaw_rad, const vision
 }
 }  // namespace
 
-TStageTimes measureStageTimes(int width, int height, const vision::IRotationFlowModel& learned, int pairs,
-							  int repetitions)
+TStageTimes measureStageTimes(const std::string& source, const std::vector<TTruthPair>& pairs,
+							  const vision::IRotationFlowModel& learned, int repetitions)
 {
+	const int width = pairs.front().first.cols, height = pairs.front().first.rows;
 	const auto camera = benchCamera(width, height);
 	const auto options = benchVisionOptions(width);
+	// One OpenCV thread: on the shared 2-core machine its worker threads wait for busy cores.
+	const int threads = cv::getNumThreads();
+	cv::setNumThreads(1);
 	TStageTimes s;
+	s.source = source;
 	s.width = width;
 	s.height = height;
-	for (int k = 0; k < pairs; ++k)
+	const double n = static_cast<double>(pairs.size());
+	for (const auto& pair : pairs)
 	{
-		const auto spec = vision::scenarioPair(camera, vision::EPlaneMotion::translation_rotation, k, 77);
-		const auto t = timePair(vision::makePlanePair(spec), spec.robot_yaw_rad, camera, learned, options, repetitions);
-		s.detect_ms += t.detect * kMs / pairs;
-		s.track_ms += t.track * kMs / pairs;
-		s.rotation_analytic_ms += t.analytic * kMs / pairs;
-		s.rotation_learned_ms += t.learned * kMs / pairs;
-		s.foe_ms += t.foe * kMs / pairs;
-		s.cues_ms += t.cues * kMs / pairs;
-		s.peer_ms += t.peer * kMs / pairs;
+		const auto t = timePair(pair, pair.robot_yaw_rad, camera, learned, options, repetitions);
+		s.detect_ms += t.detect * kMs / n;
+		s.track_ms += t.track * kMs / n;
+		s.rotation_analytic_ms += t.analytic * kMs / n;
+		s.rotation_learned_ms += t.learned * kMs / n;
+		s.foe_ms += t.foe * kMs / n;
+		s.cues_ms += t.cues * kMs / n;
+		s.peer_ms += t.peer * kMs / n;
 	}
+	cv::setNumThreads(threads);
 	return s;
 }
 
