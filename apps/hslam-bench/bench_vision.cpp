@@ -86,7 +86,7 @@ void printFoeRow(const std::string& name, const TFoeRow& r)
 			  << vision::medianOf(r.peer) << std::setw(8) << r.peer_invalid << "\n";
 }
 
-/** The learned model as hslam-vision-train --synthetic 30 trains it (640 x 480). */
+/** The learned model trained on 30 plane-warp turns (as hslam-vision-train --synthetic does, without a held-out part). */
 vision::CLearnedRotationFlow trainLearned(const vision::TMountedCamera& camera)
 {
 	vision::TRotationTrainingOptions o;
