@@ -9,12 +9,14 @@
  *   hslam-bench legs --data DIR [--out DIR] [--config FILE]
  *   hslam-bench legs-sim [--data rawlog_samples] [--out DIR] [--config FILE]
  *   hslam-bench hwdrivers [--repetitions N]
+ *   hslam-bench vision [--data rawlog_samples] [--repetitions N]   (camera branch, bench_vision.cpp)
  *   hslam-bench pipeline [-r RAWLOG ...] [-g GROUND_TRUTH ...] [-n N]   (own options: bench_pipeline.cpp)
  *   hslam-bench graph [-r RAWLOG -g GROUND_TRUTH ...] [--max-keyframes N]   (own options: bench_graph.cpp)
  *   hslam-bench nav [--pairs-per-world N] [--methods ours,mrpt_nd,...]  (own options: bench_nav.cpp)
  */
 #include <hslam/common/version.h>
 #include "bench_common.h"
+#include "bench_vision.h"
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
@@ -22,15 +24,15 @@
 
 int main(int argc, char** argv)
 {
-	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, grid-range, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers, pipeline, graph, nav)", ' ', hslam::common::versionText());
-	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid, grid-range, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers, pipeline, graph, nav (pipeline, graph, nav: hslam-bench <suite> --help)",
+	TCLAP::CmdLine cmd("hslam-bench: benchmark suites (grid, grid-range, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers, vision, pipeline, graph, nav)", ' ', hslam::common::versionText());
+	TCLAP::UnlabeledValueArg<std::string> suite("suite", "suite to run: grid, grid-range, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers, vision, pipeline, graph, nav (pipeline, graph, nav: hslam-bench <suite> --help)",
 												true, "", "suite", cmd);
 	TCLAP::MultiArg<std::string> rawlogs("r", "rawlog",
 										 "rawlog(s) with laser scans and odometry (default: MRPT's sample rawlog)",
 										 false, "file", cmd);
 	TCLAP::ValueArg<int> repetitions("n", "repetitions", "timed runs per measurement, best kept (default 5)", false,
 									 5, "N", cmd);
-	TCLAP::ValueArg<std::string> data("", "data", "legs: folder laid out like ../shared/datasets/legs; legs-sim, sonar-batch, grid-range: folder of simulated samples (default: ../shared/datasets/legs, rawlog_samples)", false,
+	TCLAP::ValueArg<std::string> data("", "data", "legs: folder laid out like ../shared/datasets/legs; legs-sim, sonar-batch, grid-range, vision: folder of simulated samples (default: ../shared/datasets/legs, rawlog_samples)", false,
 									  "../shared/datasets/legs", "dir", cmd);
 	TCLAP::ValueArg<std::string> out("", "out", "folder for images written by a suite (default .)", false, ".",
 									 "dir", cmd);
@@ -58,9 +60,11 @@ int main(int argc, char** argv)
 		if (suite.getValue() == "legs-sim")
 			return hslam::bench::runLegsSimSuite(data.isSet() ? data.getValue() : "rawlog_samples", out.getValue(),
 												 config.getValue());
+		if (suite.getValue() == "vision")
+			return hslam::bench::runVisionSuite(std::max(1, repetitions.getValue()), data.isSet() ? data.getValue() : "rawlog_samples");
 		if (suite.getValue() == "hwdrivers") return hslam::bench::runHwdriversSuite(std::max(1, repetitions.getValue()));
 		std::cerr << "hslam-bench: unknown suite '" << suite.getValue()
-				  << "' (available: grid, grid-range, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers, pipeline, graph, nav)\n";
+				  << "' (available: grid, grid-range, lines, sonar, sonar-batch, legs, legs-sim, hwdrivers, vision, pipeline, graph, nav)\n";
 		return 1;
 	}
 	catch (const TCLAP::ArgException& e)

@@ -64,9 +64,9 @@ TEST(VisionCues, AMovingPatchIsFoundAtItsBearing)
 	TPlanePair pair = makePlanePair(spec);
 	// A textured object moving 12 px down in the image (off the FOE's radial lines): pasted into both images, shifted in the second.
 	cv::RNG rng(9);
-	cv::Mat patch(90, 60, CV_8UC1);
-	rng.fill(patch, cv::RNG::UNIFORM, 0, 255);
-	cv::resize(patch(cv::Rect(0, 0, 15, 22)), patch, patch.size(), 0, 0, cv::INTER_NEAREST);
+	cv::Mat blocks(22, 15, CV_8UC1), patch;  // 4 x 4 px blocks (resized from a separate Mat: in place gave a flat patch)
+	rng.fill(blocks, cv::RNG::UNIFORM, 0, 255);
+	cv::resize(blocks, patch, cv::Size(60, 90), 0, 0, cv::INTER_NEAREST);
 	patch.copyTo(pair.first(cv::Rect(450, 200, 60, 90)));
 	patch.copyTo(pair.second(cv::Rect(450, 212, 60, 90)));
 	const CFlowAnalyzer analyzer(cam, &analytic, TVisionOptions{});

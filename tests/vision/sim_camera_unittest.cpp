@@ -38,16 +38,6 @@ cv::Mat renderGrey(const sim::CPinholeCameraSimulator& cam, const sim::CWorld& w
 	return vision::greyImageOf(*obs);
 }
 
-/** True FOE of a robot motion: K t / t_z with t the camera translation in the second camera frame. */
-cv::Point2d trueFoe(const vision::TMountedCamera& cam, const mrpt::poses::CPose3D& robotDelta)
-{
-	const auto M = vision::cameraMotion(cam.sensorPose, robotDelta);
-	const auto R = M.getRotationMatrix();
-	cv::Vec3d t(M.x(), M.y(), M.z()), t2;
-	for (int r = 0; r < 3; ++r) t2[r] = R(0, r) * t[0] + R(1, r) * t[1] + R(2, r) * t[2];  // R^T t
-	const cv::Vec3d f = vision::cameraMatrix(cam.intrinsics) * t2;
-	return {f[0] / f[2], f[1] / f[2]};
-}
 }  // namespace
 
 TEST(SimCamera, RenderedMotionGivesTheTrueFoe)
@@ -71,7 +61,7 @@ TEST(SimCamera, RenderedMotionGivesTheTrueFoe)
 		const auto p1 = (mrpt::poses::CPose2D(p0) + mrpt::poses::CPose2D(delta)).asTPose();
 		const auto a = analyzer.analyze(renderGrey(cam, w, p0), renderGrey(cam, w, p1), delta.yaw());
 		ASSERT_TRUE(a.foe.valid) << c.dyaw_deg;
-		const cv::Point2d truth = trueFoe(cam.camera(), delta);
+		const cv::Point2d truth = vision::trueFoeOfRobotMotion(cam.camera(), delta);
 		std::cout << "rendered pair, yaw " << c.dyaw_deg << " deg: FOE " << a.foe.x_px << ", " << a.foe.y_px
 				  << " true " << truth << " (" << a.flow.vectors.size() << " tracks)\n";
 		EXPECT_NEAR(a.foe.x_px, truth.x, 4.0);

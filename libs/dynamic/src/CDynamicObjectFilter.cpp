@@ -56,8 +56,19 @@ CDynamicObjectFilter::CDynamicObjectFilter(const TOptions& options, std::shared_
 	  m_persons(personTrackerOptions(options)),
 	  m_seen(seenGridOptions(options)),
 	  m_seenInserter(seenInserterOptions(options)),
-	  m_static(staticGridOptions(options))
+	  m_static(staticGridOptions(options)),
+	  m_cues(options.camera_cues)
 {
+}
+
+void CDynamicObjectFilter::markCameraCueEvidence(double t_s)
+{
+	for (size_t i = 0; i < m_frame.legs.size(); ++i)
+	{
+		const bool cue = m_cues.supports(std::atan2(m_frame.legs[i].y_m, m_frame.legs[i].x_m), t_s);
+		m_frame.leg_camera_cue.push_back(cue);
+		if (cue) m_frame.leg_in_free_space[i] = true;
+	}
 }
 
 bool CDynamicObjectFilter::seenFreeBefore(const mrpt::math::TPoint2D& leg, const mrpt::poses::CPose2D& sensorPose) const
@@ -124,6 +135,7 @@ const TDynamicFrame& CDynamicObjectFilter::process(const mrpt::obs::CObservation
 	const mrpt::poses::CPose2D sensorPose = robotPose + mrpt::poses::CPose2D(scan.sensorPose);
 
 	for (const auto& l : legsWorld) m_frame.leg_in_free_space.push_back(seenFreeBefore(l, sensorPose));
+	if (m_options.camera_cues.enabled) markCameraCueEvidence(t_s);
 	constexpr double kNever = std::numeric_limits<double>::infinity();
 	for (const auto& l : legsWorld)
 		m_frame.leg_static_since_s.push_back(m_options.static_evidence ? m_static.staticSince(l, t_s) : kNever);

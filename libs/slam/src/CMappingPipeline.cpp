@@ -122,7 +122,10 @@ void CMappingPipeline::processObservation(const mrpt::obs::CObservation::Ptr& ob
 	else if (auto image = std::dynamic_pointer_cast<mrpt::obs::CObservationImage>(obs))
 	{
 		const TOdometryIncrement pending = m_odometry.pendingIncrement();
+		const size_t visionRows = m_vision.rows().size();
 		m_vision.process(*image, pending.known ? std::optional(m_deadReckoningPose + pending.delta) : std::nullopt, m_timer);
+		if (m_dynamicFilter && m_dynamicOptions.camera_cues.enabled && m_vision.rows().size() > visionRows)
+			m_dynamicFilter->addCameraCues(cameraCues(m_vision.rows().back()), m_vision.rows().back().t_s);
 	}
 	else if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(obs))
 	{

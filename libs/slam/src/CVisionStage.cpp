@@ -28,6 +28,13 @@ vision::CLearnedRotationFlow loadModel(const std::string& path)
 }
 }  // namespace
 
+std::vector<dynamic::TCameraCue> cameraCues(const TVisionRow& row)
+{
+	std::vector<dynamic::TCameraCue> cues;
+	for (const auto& r : row.regions) cues.push_back({row.t_s, r.bearing_min_rad, r.bearing_max_rad});
+	return cues;
+}
+
 CVisionStage::CVisionStage(const mrpt::config::CConfigFileBase& cfg)
 	: m_options(common::loadedOptions<TVisionStageOptions>(cfg, "vision"))
 {

@@ -30,12 +30,19 @@ int radialSign(const TFlowVector& f, double x0, double y0)
 	return (f.p0.x - x0) * d.x + (f.p0.y - y0) * d.y >= 0 ? 1 : -1;
 }
 
-/** Inliers of an FOE hypothesis with the majority radial sign. */
-std::vector<const TLine*> inliersOf(const std::vector<TLine>& lines, double x0, double y0, double tol, int& sign)
+/** Inliers of an FOE hypothesis with the majority radial sign: the line passes
+ * within ransac_inlier_px of it, plus what end-point noise of
+ * ransac_inlier_noise_px turns the line by at the FOE's distance (D / |flow|). */
+std::vector<const TLine*> inliersOf(const std::vector<TLine>& lines, double x0, double y0, const TFoeOptions& o,
+									int& sign)
 {
 	std::vector<const TLine*> out[2];
 	for (const auto& l : lines)
-		if (std::abs(l.a * x0 + l.b * y0 - l.c) < tol) out[radialSign(*l.f, x0, y0) > 0 ? 0 : 1].push_back(&l);
+	{
+		const double lever = std::hypot(l.f->p0.x - x0, l.f->p0.y - y0) / cv::norm(l.f->flow());
+		if (std::abs(l.a * x0 + l.b * y0 - l.c) < o.ransac_inlier_px + o.ransac_inlier_noise_px * lever)
+			out[radialSign(*l.f, x0, y0) > 0 ? 0 : 1].push_back(&l);
+	}
 	sign = out[0].size() >= out[1].size() ? 1 : -1;
 	return sign > 0 ? out[0] : out[1];
 }
@@ -80,7 +87,7 @@ bool ransacFoe(const std::vector<TLine>& lines, const TFoeOptions& o, double& x0
 		if (std::abs(det) < 1e-3) continue;  // (near-)parallel lines
 		const double x = (l1.c * l2.b - l1.b * l2.c) / det, y = (l1.a * l2.c - l1.c * l2.a) / det;
 		int sign = 1;
-		const size_t n = inliersOf(lines, x, y, o.ransac_inlier_px, sign).size();
+		const size_t n = inliersOf(lines, x, y, o, sign).size();
 		if (n > best)
 		{
 			best = n;
@@ -116,11 +123,11 @@ TFoeEstimate estimateFoe(const std::vector<TFlowVector>& residual, const TFoeOpt
 	std::vector<const TLine*> inl;
 	for (int refine = 0; refine < 2; ++refine)  // refit, re-select, refit
 	{
-		inl = inliersOf(lines, x0, y0, o.ransac_inlier_px, sign);
+		inl = inliersOf(lines, x0, y0, o, sign);
 		if (static_cast<int>(inl.size()) < std::max(2, o.min_vectors / 2)) return out;
 		if (!solveLines(inl, x0, y0, conditioning, std_px)) return out;
 	}
-	inl = inliersOf(lines, x0, y0, o.ransac_inlier_px, sign);
+	inl = inliersOf(lines, x0, y0, o, sign);
 	for (const TLine* l : inl) out.inlier[l->index] = 1;
 	out.valid = true;
 	out.x_px = x0;

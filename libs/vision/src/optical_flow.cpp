@@ -8,8 +8,6 @@
 
 namespace hslam::vision
 {
-namespace
-{
 std::vector<cv::Point2f> detectCorners(const cv::Mat& grey, const TFlowOptions& o)
 {
 	cv::Mat mask(grey.size(), CV_8UC1, cv::Scalar(0));
@@ -20,19 +18,32 @@ std::vector<cv::Point2f> detectCorners(const cv::Mat& grey, const TFlowOptions& 
 	return corners;
 }
 
+namespace
+{
 bool inside(const cv::Point2f& p, const cv::Size& s)
 {
 	return p.x >= 0 && p.y >= 0 && p.x <= s.width - 1 && p.y <= s.height - 1;
+}
+
+void checkPair(const cv::Mat& prevGrey, const cv::Mat& currGrey)
+{
+	if (prevGrey.type() != CV_8UC1 || currGrey.type() != CV_8UC1 || prevGrey.size() != currGrey.size() ||
+		prevGrey.empty())
+		throw std::invalid_argument("trackFeatures: two non-empty 8-bit grey images of the same size are needed");
 }
 }  // namespace
 
 TFlowResult trackFeatures(const cv::Mat& prevGrey, const cv::Mat& currGrey, const TFlowOptions& o)
 {
-	if (prevGrey.type() != CV_8UC1 || currGrey.type() != CV_8UC1 || prevGrey.size() != currGrey.size() ||
-		prevGrey.empty())
-		throw std::invalid_argument("trackFeatures: two non-empty 8-bit grey images of the same size are needed");
+	checkPair(prevGrey, currGrey);
+	return trackCorners(prevGrey, currGrey, detectCorners(prevGrey, o), o);
+}
+
+TFlowResult trackCorners(const cv::Mat& prevGrey, const cv::Mat& currGrey, const std::vector<cv::Point2f>& p0,
+						 const TFlowOptions& o)
+{
+	checkPair(prevGrey, currGrey);
 	TFlowResult out;
-	const std::vector<cv::Point2f> p0 = detectCorners(prevGrey, o);
 	out.corners = p0.size();
 	if (p0.empty()) return out;
 	const cv::Size window(o.lk_window_px, o.lk_window_px);

@@ -75,9 +75,16 @@ TPlanePairSpec planePairForRobotMotion(const TMountedCamera& camera, const mrpt:
 
 TPlanePairSpec scenarioPair(const TMountedCamera& camera, EPlaneMotion motion, int k, uint64_t seed)
 {
-	cv::RNG rng(seed * 1000003ULL + static_cast<uint64_t>(k) * 7919ULL + static_cast<uint64_t>(motion));
+	const uint64_t key = seed * 1000003ULL + static_cast<uint64_t>(k) * 7919ULL + static_cast<uint64_t>(motion);
+	cv::RNG rng(key);
 	const double deg = M_PI / 180.0;
-	const double sign = rng.uniform(0, 2) ? 1.0 : -1.0;
+	// The turn direction from a mixed key (splitmix64 finaliser): cv::RNG's first
+	// draw from these nearby small seeds always had the same parity, which made
+	// every "either way" turn of a scenario the same way (all right turns).
+	uint64_t z = (key ^ (key >> 30)) * 0xbf58476d1ce4e5b9ULL;
+	z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+	rng.uniform(0, 2);  // the old draw, kept so the other parameters stay as they were
+	const double sign = ((z ^ (z >> 31)) & 1) ? 1.0 : -1.0;
 	double dist_m = rng.uniform(0.05, 0.10), dir_rad = 0, yaw_rad = 0;
 	switch (motion)
 	{

@@ -21,6 +21,7 @@ TFoeErrors foeErrorsOnScenario(const TMountedCamera& camera, EPlaneMotion motion
 			continue;
 		}
 		e.lsq_px.push_back(std::hypot(a.foe.x_px - pair.foe.x, a.foe.y_px - pair.foe.y));
+		e.lsq_x_px.push_back(std::abs(a.foe.x_px - pair.foe.x));
 		if (a.vote.valid_x) e.vote_x_px.push_back(std::abs(a.vote.x_px - pair.foe.x));
 	}
 	return e;
@@ -60,6 +61,17 @@ double rotationResidualRms(const IRotationFlowModel& model, const std::vector<TR
 		s += d.dot(d);
 	}
 	return std::sqrt(s / static_cast<double>(samples.size()));
+}
+
+cv::Point2d trueFoeOfRobotMotion(const TMountedCamera& camera, const mrpt::poses::CPose3D& robotDelta)
+{
+	const auto M = cameraMotion(camera.sensorPose, robotDelta);
+	const auto R = M.getRotationMatrix();
+	const cv::Vec3d t(M.x(), M.y(), M.z());
+	cv::Vec3d t2;
+	for (int r = 0; r < 3; ++r) t2[r] = R(0, r) * t[0] + R(1, r) * t[1] + R(2, r) * t[2];  // R^T t
+	const cv::Vec3d f = cameraMatrix(camera.intrinsics) * t2;
+	return {f[0] / f[2], f[1] / f[2]};
 }
 
 double medianOf(std::vector<double> v)

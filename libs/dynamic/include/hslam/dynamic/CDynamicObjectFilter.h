@@ -55,6 +55,7 @@
 #pragma once
 
 #include <hslam/common/range_data.h>
+#include <hslam/dynamic/CCameraCueBuffer.h>
 #include <hslam/dynamic/CKalmanTracker.h>
 #include <hslam/dynamic/CLegDetector.h>
 #include <hslam/dynamic/CStaticEvidenceGrid.h>
@@ -77,7 +78,8 @@ struct TDynamicFrame
 	std::vector<int> leg_track;  //!< per leg: id of its leg track
 	std::vector<int> person_track;  //!< per leg: id of its person track
 	std::vector<bool> leg_is_dynamic;  //!< per leg
-	std::vector<bool> leg_in_free_space;  //!< per leg: motion evidence (see file comment)
+	std::vector<bool> leg_in_free_space;  //!< per leg: motion evidence (see file comment; includes camera cues)
+	std::vector<bool> leg_camera_cue;  //!< per leg: a camera cue covers it (empty unless camera_cue_evidence)
 	std::vector<double> leg_static_since_s;  //!< per leg: on static structure established since (+inf: not; see file comment)
 	std::vector<bool> beam_is_dynamic;  //!< per beam: hits a confirmed dynamic object
 	/** World end points of earlier beams that hit a track confirmed now (see file comment). */
@@ -108,6 +110,7 @@ class CDynamicObjectFilter
 		int retro_clear_max_points = 300;  //!< end points kept per unconfirmed person track (0: off)
 		bool static_evidence = true;  //!< veto confirmation on established static structure
 		CStaticEvidenceGrid::TOptions static_grid;  //!< its grid (static_* keys)
+		TCameraCueOptions camera_cues;  //!< camera moving-object cues as motion evidence (CCameraCueBuffer.h)
 
 		template <class V>
 		void visit(V& v)
@@ -134,6 +137,7 @@ class CDynamicObjectFilter
 			v.real("static_min_span_s", static_grid.min_span_s, 0.0, 3600.0);
 			v.real("static_max_gap_s", static_grid.max_gap_s, 0.0, 3600.0);
 			v.real("static_memory_s", static_grid.memory_s, 0.1, 3600.0);
+			camera_cues.visit(v);
 		}
 	};
 
@@ -158,6 +162,11 @@ class CDynamicObjectFilter
 	std::vector<bool> predictedDynamicBeams(const common::TRangeData& scan, const mrpt::poses::CPose2D& predictedPose,
 											double t_s, double poseMargin_m) const;
 
+	/** Camera cues of an image pair taken at `t_s` (used only with
+	 * camera_cue_evidence): a leg of a later scan within a cue's bearing
+	 * range counts as motion evidence (CCameraCueBuffer.h). */
+	void addCameraCues(const std::vector<TCameraCue>& cues, double t_s) { m_cues.add(cues, t_s); }
+
 	const TDynamicFrame& lastFrame() const { return m_frame; }
 	const CKalmanTracker& legTracker() const { return m_legs; }
 	const CKalmanTracker& personTracker() const { return m_persons; }
@@ -173,6 +182,8 @@ class CDynamicObjectFilter
 	/** Radius of the disc around person track `t` whose beams are masked. */
 	double maskRadius(const TTrack& t) const;
 	bool seenFreeBefore(const mrpt::math::TPoint2D& legWorld, const mrpt::poses::CPose2D& sensorPose) const;
+	/** Legs covered by a camera cue get motion evidence (leg_camera_cue, leg_in_free_space). */
+	void markCameraCueEvidence(double t_s);
 
 	TOptions m_options;
 	CLegDetector m_detector;
@@ -180,6 +191,7 @@ class CDynamicObjectFilter
 	maps::CTiledOccupancyGrid m_seen;  //!< what the sensor has seen (motion evidence)
 	maps::CLaserGridInserter m_seenInserter;
 	CStaticEvidenceGrid m_static;  //!< static-world evidence (see file comment)
+	CCameraCueBuffer m_cues;  //!< recent camera cues (camera_cue_evidence)
 	std::map<int, std::vector<mrpt::math::TPoint2D>> m_pendingHits;  //!< person track id -> beam end points (world)
 	TDynamicFrame m_frame;
 };

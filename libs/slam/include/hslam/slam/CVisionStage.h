@@ -14,6 +14,7 @@
 #pragma once
 
 #include <hslam/common/CStageTimer.h>
+#include <hslam/dynamic/CCameraCueBuffer.h>
 #include <hslam/vision/CFlowAnalyzer.h>
 #include <hslam/vision/observation_image.h>
 #include <mrpt/config/CConfigFileBase.h>
@@ -59,6 +60,10 @@ struct TVisionRow
 	std::vector<vision::TMovingRegion> regions;
 	size_t inconsistent = 0;
 };
+
+/** The moving-object cues of a row for the dynamic object filter
+ * ([dynamic_objects] camera_cue_evidence): bearing ranges in the robot frame. */
+std::vector<dynamic::TCameraCue> cameraCues(const TVisionRow& row);
 
 class CVisionStage
 {

@@ -14,8 +14,11 @@
  *    lies on a line through the FOE (x0, y0): v x0 - u y0 = v x - u y. Each
  *    row is divided by the vector's length so its residual is the distance of
  *    the FOE from the vector's line (px). RANSAC (pairs of lines, inliers
- *    within ransac_inlier_px and pointing away from the FOE, or all towards
- *    it when the camera backs up) then cv::solve(DECOMP_SVD) on the inliers.
+ *    within ransac_inlier_px + ransac_inlier_noise_px x D / |flow|, where D
+ *    is the vector's distance from the FOE: end-point noise of that size
+ *    turns a short vector's line far from the FOE by that much; and pointing
+ *    away from the FOE, or all towards it when the camera backs up) then
+ *    cv::solve(DECOMP_SVD) on the inliers.
  *    Confidence = inlier fraction x sqrt(lambda_min / lambda_max) of the
  *    normal matrix (0 when all lines are parallel, i.e. the FOE is unobservable). */
 #pragma once
@@ -35,7 +38,8 @@ struct TFoeOptions  //!< [vision] keys of the FOE estimators
 	int vote_rows = 10;
 	double vote_value = 500;  //!< thesis: +-500 per vector
 	int ransac_iterations = 200;
-	double ransac_inlier_px = 3.0;  //!< distance of the FOE from a vector's line
+	double ransac_inlier_px = 3.0;  //!< distance of the FOE from a vector's line ...
+	double ransac_inlier_noise_px = 0.3;  //!< ... plus this end-point noise x (distance to the FOE / vector length)
 	int min_vectors = 8;  //!< fewer usable vectors: no FOE
 	int seed = 1;  //!< RANSAC sampling (deterministic)
 
@@ -51,6 +55,7 @@ struct TFoeOptions  //!< [vision] keys of the FOE estimators
 		v.real("vote_value", vote_value, 1.0, 1e6);
 		v.integer("ransac_iterations", ransac_iterations, 1, 100000);
 		v.real("ransac_inlier_px", ransac_inlier_px, 0.01, 100.0);
+		v.real("ransac_inlier_noise_px", ransac_inlier_noise_px, 0.0, 10.0);
 		v.integer("min_vectors", min_vectors, 2, 10000);
 		v.integer("foe_seed", seed, 0, 1 << 30);
 	}

@@ -53,8 +53,16 @@ struct TFlowResult
 };
 
 /** Corners of `prevGrey` tracked into `currGrey` (both CV_8UC1, same size;
- * throws std::invalid_argument otherwise). */
+ * throws std::invalid_argument otherwise): detectCorners then trackCorners. */
 TFlowResult trackFeatures(const cv::Mat& prevGrey, const cv::Mat& currGrey, const TFlowOptions& options);
+
+/** The Shi-Tomasi corners of one grey image (not within border_px of its edge). */
+std::vector<cv::Point2f> detectCorners(const cv::Mat& grey, const TFlowOptions& options);
+
+/** Lucas-Kanade tracks of `corners` from `prevGrey` into `currGrey` with the
+ * forward-backward check (same image checks as trackFeatures). */
+TFlowResult trackCorners(const cv::Mat& prevGrey, const cv::Mat& currGrey, const std::vector<cv::Point2f>& corners,
+						 const TFlowOptions& options);
 
 /** Root mean square of the vector lengths (px); 0 for none. The noise floor
  * of thesis 4.8.2 iv is this at rest (0.2 px there). */

@@ -12,6 +12,7 @@ namespace hslam::vision
 struct TFoeErrors
 {
 	std::vector<double> lsq_px;  //!< |least-squares FOE - true FOE| per pair with a valid FOE
+	std::vector<double> lsq_x_px;  //!< |least-squares x - true x|, same pairs (compare with the vote's x)
 	std::vector<double> vote_x_px;  //!< |vote x - true x| per pair with a vote
 	size_t invalid = 0;  //!< pairs without a least-squares FOE
 };
@@ -30,6 +31,11 @@ std::vector<TRotationSample> rotationSamplesOnScenario(const TMountedCamera& cam
 
 /** RMS (px) of measured minus predicted flow. */
 double rotationResidualRms(const IRotationFlowModel& model, const std::vector<TRotationSample>& samples);
+
+/** True FOE (px) in the second image of a robot motion `robotDelta` (robot 2
+ * in robot 1) seen by `camera`: K t / t_z with t the camera translation in
+ * the second camera frame (R^T t_M of cameraMotion). */
+cv::Point2d trueFoeOfRobotMotion(const TMountedCamera& camera, const mrpt::poses::CPose3D& robotDelta);
 
 /** Median (NaN for none). */
 double medianOf(std::vector<double> values);
