@@ -270,3 +270,32 @@ TEST(RawlogReader, GarbageWithNoObjectAfterItIsAnError)
 	EXPECT_NE(r.error.find("tail.rawlog: entry 3: corrupt data"), std::string::npos) << r.error;
 	EXPECT_NE(r.error.find("no readable object after byte"), std::string::npos) << r.error;
 }
+
+TEST(RawlogReader, AbsurdSonarCountsAreRefusedInEveryRangeVersion)
+{
+	// MRPT 2.5 reads CObservationRange versions 0-3 alike up to the sensor
+	// count and resizes before reading the sensors; a fuzzer found a version-0
+	// object asking for 2 GB (tests/fuzz/regressions/rawlog_reader). Each
+	// version with a crafted count is refused, the scans around it are kept.
+	for (uint8_t version = 0; version <= 3; ++version)
+	{
+		hslam::testing::CTempDir tmp;
+		mrpt::obs::CObservationRange sonar;
+		sonar.sensorLabel = "SONAR";
+		sonar.sensedData.resize(8);
+		TBytes bytes = serialize(sonar);
+		const size_t versionAt = 1 + std::strlen("mrpt::obs::CObservationRange");
+		ASSERT_EQ(bytes[versionAt], 3u);  // MRPT 2.5 writes version 3
+		bytes[versionAt] = version;
+		putU32(bytes, versionAt + 1 + 12, 0x10000000u);  // 2^28 sensors
+		auto objs = scanObjects(3);
+		objs.insert(objs.begin() + 1, bytes);
+		writeFile(tmp.file("sonar.rawlog"), objs, false);
+		const long rssBefore_kB = peakRss_kB();
+		const auto r = readAll(tmp.file("sonar.rawlog"));
+		EXPECT_EQ(r.stamps, (std::vector<double>{1000, 1001, 1002})) << "version " << int(version);
+		ASSERT_EQ(r.problems.size(), 1u) << "version " << int(version);
+		EXPECT_NE(r.problems[0].message.find("range sensor count 268435456"), std::string::npos) << r.problems[0].message;
+		EXPECT_LT(peakRss_kB() - rssBefore_kB, 200 * 1024);
+	}
+}

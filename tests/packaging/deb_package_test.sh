@@ -50,8 +50,20 @@ rm -f "$work"/rec_*.rawlog
 emulator=$!
 trap 'kill $emulator 2>/dev/null || true' EXIT
 for _ in $(seq 50); do [ -e "$work/pioneer" ] && break; sleep 0.1; done
-(sleep 4; echo q) | timeout 60 rawlog-grabber -p "$lib/libhslam-hwdrivers-plugin.so" "$ini" > "$work/grabber.log" 2>&1 ||
-  { cat "$work/grabber.log"; fail "rawlog-grabber -p"; }
+# Stop it (a key on its stdin) once it has written 15 periods, not after a
+# fixed time: on a loaded machine the link can take seconds to come up.
+mkfifo "$work/grabber-stdin"
+timeout 90 rawlog-grabber -p "$lib/libhslam-hwdrivers-plugin.so" "$ini" < "$work/grabber-stdin" > "$work/grabber.log" 2>&1 &
+grabber=$!
+exec 3> "$work/grabber-stdin"
+for _ in $(seq 600); do
+  [ "$(grep -c 'Saved' "$work/grabber.log" || true)" -ge 15 ] && break
+  kill -0 $grabber 2>/dev/null || break
+  sleep 0.1
+done
+echo q >&3
+exec 3>&-
+wait $grabber || { cat "$work/grabber.log"; fail "rawlog-grabber -p"; }
 rawlog=$(ls "$work"/rec_*.rawlog | head -1)
 rawlog-edit --info -i "$rawlog" > "$work/info.txt" 2>&1 || { cat "$work/info.txt"; fail "rawlog-edit --info"; }
 odometry=$(grep -oP 'ODOMETRY /\s*\K[0-9]+' "$work/info.txt" || true)

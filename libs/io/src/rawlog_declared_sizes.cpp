@@ -51,6 +51,24 @@ class CLayoutCursor
 };
 
 TDeclaredSizeCheck absurd(const std::string& what) { return {EResult::Absurd, 0, what}; }
+
+/** A nested pose object at `at` as MRPT 2.5 writes it: header byte, `name`
+ * (20 chars), `version`, `doubles` doubles, end flag 0x88. Plausible if so,
+ * NotChecked for another header byte (an older layout: MRPT's own checks),
+ * Absurd for this header byte with another name, version or end: MRPT would
+ * read the object's fields from the wrong offsets (found by fuzzing: a
+ * mutated name made MRPT read a 1 GB string length out of the ranges). */
+TDeclaredSizeCheck checkNestedPose(CLayoutCursor& c, size_t at, const char* name, uint8_t version, size_t doubles)
+{
+	const size_t nameLen = std::strlen(name), bytes = 1 + nameLen + 1 + 8 * doubles + 1;
+	if (!c.have(at, bytes)) return c.missing();
+	if (c.byte(at) != (0x80 | nameLen)) return {};
+	for (size_t k = 0; k < nameLen; ++k)
+		if (c.byte(at + 1 + k) != static_cast<uint8_t>(name[k])) return absurd(std::string("pose object is not a ") + name);
+	if (c.byte(at + 1 + nameLen) != version) return absurd(std::string(name) + " version " + std::to_string(c.byte(at + 1 + nameLen)));
+	if (c.byte(at + bytes - 1) != 0x88) return absurd(std::string(name) + " without its end flag");
+	return {EResult::Plausible, 0, ""};
+}
 TDeclaredSizeCheck plausible() { return {EResult::Plausible, 0, ""}; }
 
 /** A count that must not exceed `limit`, whose `bytesEach`-byte elements
@@ -75,64 +93,66 @@ TDeclaredSizeCheck checkString(CLayoutCursor& c, const std::string& what, size_t
 // CObservation2DRangeScan v7: aperture f32, rightToLeft u8, maxRange f32,
 // sensorPose (CPose3D object), N u32, N f32 ranges, N u8 validity, stdError
 // f32, timestamp u64, beamAperture f32, sensorLabel, ...
-TDeclaredSizeCheck checkScan(CLayoutCursor& c, size_t body, const TDeclaredSizeLimits& l)
+TDeclaredSizeCheck checkScan(CLayoutCursor& c, size_t body, uint8_t /*version*/, const TDeclaredSizeLimits& l)
 {
 	const size_t nAt = body + 4 + 1 + 4 + POSE3D_BYTES;
+	auto pose = checkNestedPose(c, body + 9, "mrpt::poses::CPose3D", 3, 12);
+	if (pose.result != EResult::Plausible) return pose;  // another layout, corrupt, or more bytes needed
 	if (!c.have(nAt, 4)) return c.missing();
-	if (c.byte(body + 9) != (0x80 | 20)) return {};  // not the layout we know
 	const uint32_t n = c.u32(nAt);
 	auto r = checkCount(c, "beam count", n, l.max_scan_beams, nAt + 4, 5);
 	if (r.result != EResult::Plausible) return r;
 	return checkString(c, "sensor label length", nAt + 4 + 5 * size_t(n) + 4 + 8 + 4, l.max_label_chars);
 }
 
-// CObservationRange v3: min, max, cone f32, N u32, N x (id u16, CPose3D, range f32), label.
-TDeclaredSizeCheck checkRange(CLayoutCursor& c, size_t body, const TDeclaredSizeLimits& l)
+// CObservationRange v0-v3: min, max, cone f32, N u32, N x ([v3: id u16],
+// CPose3D, range f32), [v1+: label]. Every version reads N and resizes first.
+TDeclaredSizeCheck checkRange(CLayoutCursor& c, size_t body, uint8_t version, const TDeclaredSizeLimits& l)
 {
 	const size_t nAt = body + 12;
 	if (!c.have(nAt, 4)) return c.missing();
 	const uint32_t n = c.u32(nAt);
-	constexpr size_t each = 2 + POSE3D_BYTES + 4;
+	const size_t each = (version >= 3 ? 2 : 0) + POSE3D_BYTES + 4;
 	auto r = checkCount(c, "range sensor count", n, l.max_range_sensors, nAt + 4, each);
-	if (r.result != EResult::Plausible) return r;
+	if (r.result != EResult::Plausible || version < 1) return r;
 	return checkString(c, "sensor label length", nAt + 4 + each * size_t(n), l.max_label_chars);
 }
 
 // CSensoryFrame v2 / CActionCollection v0: N u32, then N objects (>= 4 bytes each).
-TDeclaredSizeCheck checkCollection(CLayoutCursor& c, size_t body, const TDeclaredSizeLimits& l)
+TDeclaredSizeCheck checkCollection(CLayoutCursor& c, size_t body, uint8_t /*version*/, const TDeclaredSizeLimits& l)
 {
 	if (!c.have(body, 4)) return c.missing();
 	return checkCount(c, "object count", c.u32(body), l.max_frame_objects, body + 4, 4);
 }
 
 // CObservationComment v0: text (u32 length + chars).
-TDeclaredSizeCheck checkComment(CLayoutCursor& c, size_t body, const TDeclaredSizeLimits& l)
+TDeclaredSizeCheck checkComment(CLayoutCursor& c, size_t body, uint8_t /*version*/, const TDeclaredSizeLimits& l)
 {
 	return checkString(c, "comment length", body, l.max_comment_chars);
 }
 
 // CObservationOdometry v2: odometry (CPose2D object), sensorLabel, ...
-TDeclaredSizeCheck checkOdometry(CLayoutCursor& c, size_t body, const TDeclaredSizeLimits& l)
+TDeclaredSizeCheck checkOdometry(CLayoutCursor& c, size_t body, uint8_t /*version*/, const TDeclaredSizeLimits& l)
 {
-	if (!c.have(body, 1)) return c.missing();
-	if (c.byte(body) != (0x80 | 20)) return {};
+	auto pose = checkNestedPose(c, body, "mrpt::poses::CPose2D", 1, 3);
+	if (pose.result != EResult::Plausible) return pose;
 	return checkString(c, "sensor label length", body + POSE2D_BYTES, l.max_label_chars);
 }
 
 struct TCheckedClass
 {
 	const char* name;
-	uint8_t version;
-	TDeclaredSizeCheck (*check)(CLayoutCursor&, size_t, const TDeclaredSizeLimits&);
+	uint8_t min_version, max_version;  //!< the serialisation versions whose layout the check knows
+	TDeclaredSizeCheck (*check)(CLayoutCursor&, size_t, uint8_t, const TDeclaredSizeLimits&);
 };
 
 const std::array<TCheckedClass, 6> CHECKED{{
-	{"mrpt::obs::CObservation2DRangeScan", 7, checkScan},
-	{"mrpt::obs::CObservationRange", 3, checkRange},
-	{"mrpt::obs::CSensoryFrame", 2, checkCollection},
-	{"mrpt::obs::CActionCollection", 0, checkCollection},
-	{"mrpt::obs::CObservationComment", 0, checkComment},
-	{"mrpt::obs::CObservationOdometry", 2, checkOdometry},
+	{"mrpt::obs::CObservation2DRangeScan", 7, 7, checkScan},
+	{"mrpt::obs::CObservationRange", 0, 3, checkRange},
+	{"mrpt::obs::CSensoryFrame", 2, 2, checkCollection},
+	{"mrpt::obs::CActionCollection", 0, 0, checkCollection},
+	{"mrpt::obs::CObservationComment", 0, 0, checkComment},
+	{"mrpt::obs::CObservationOdometry", 2, 2, checkOdometry},
 }};
 
 const TCheckedClass* matchHeader(const uint8_t* data, size_t avail)
@@ -155,8 +175,9 @@ TDeclaredSizeCheck checkDeclaredSizes(const uint8_t* data, size_t avail, bool at
 	const size_t versionAt = 1 + std::strlen(k->name);
 	CLayoutCursor c(data, avail, at_end);
 	if (!c.have(versionAt, 1)) return c.missing();
-	if (c.byte(versionAt) != k->version) return {};  // other versions: MRPT's own checks only
-	auto r = k->check(c, versionAt + 1, limits);
+	const uint8_t version = c.byte(versionAt);
+	if (version < k->min_version || version > k->max_version) return {};  // other versions: MRPT's own checks only
+	auto r = k->check(c, versionAt + 1, version, limits);
 	if (r.result == EResult::Absurd) r.message = std::string(k->name) + ": " + r.message;
 	return r;
 }
