@@ -29,8 +29,7 @@ done
 seed ini_options config_ini/*.ini
 seed tum_reader rawlog_samples/*/ground_truth.tum
 
-# HSLAM_FUZZ_TARGETS (space-separated) limits the timed runs, e.g. to leave
-# out a target with an open finding (tests/fuzz/open-findings/<target>/).
+# HSLAM_FUZZ_TARGETS (space-separated) limits the timed runs to some targets.
 targets=${HSLAM_FUZZ_TARGETS:-carmen_line ini_options arcos_packets rawlog_reader tiled_map tum_reader}
 status=0
 for t in $targets; do

@@ -299,3 +299,22 @@ TEST(RawlogReader, AbsurdSonarCountsAreRefusedInEveryRangeVersion)
 		EXPECT_LT(peakRss_kB() - rssBefore_kB, 200 * 1024);
 	}
 }
+
+TEST(RawlogReader, ADamagedNamespaceDoesNotEscapeTheSizeChecks)
+{
+	// MRPT resolves a stored class name by the part after the last "::", so
+	// "mrpt::ocs::CObservation2DRangeScan" still reads as a scan; the checks
+	// must see it as one too (a fuzzer made MRPT allocate 1 GB this way).
+	hslam::testing::CTempDir tmp;
+	auto objs = scanObjects(4);
+	ASSERT_EQ(std::memcmp(objs[2].data() + 1, "mrpt::obs::", 11), 0);
+	objs[2][7] = 'c';  // mrpt::obs:: -> mrpt::ocs::
+	putU32(objs[2], beamCountOffset(objs[2]), 0x7fffffffu);
+	writeFile(tmp.file("ns.rawlog"), objs, false);
+	const long rssBefore_kB = peakRss_kB();
+	const auto r = readAll(tmp.file("ns.rawlog"));
+	EXPECT_EQ(r.stamps, (std::vector<double>{1000, 1001, 1003}));
+	ASSERT_EQ(r.problems.size(), 1u);
+	EXPECT_NE(r.problems[0].message.find("beam count 2147483647"), std::string::npos) << r.problems[0].message;
+	EXPECT_LT(peakRss_kB() - rssBefore_kB, 200 * 1024);
+}

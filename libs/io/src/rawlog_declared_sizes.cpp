@@ -3,6 +3,7 @@
 #include <array>
 #include <cstring>
 #include <functional>
+#include <string_view>
 
 namespace hslam::io
 {
@@ -155,13 +156,25 @@ const std::array<TCheckedClass, 6> CHECKED{{
 	{"mrpt::obs::CObservationOdometry", 2, 2, checkOdometry},
 }};
 
+/** The part of a class name after its last "::". */
+std::string_view shortName(std::string_view name)
+{
+	const size_t colons = name.rfind("::");
+	return colons == std::string_view::npos ? name : name.substr(colons + 2);
+}
+
+/** The checked class whose header starts `data`. Compared by the name after
+ * the last "::", as MRPT's class lookup resolves names (an old or damaged
+ * namespace, "mrpt::ocs::CObservation2DRangeScan" or "CObservation2DRangeScan",
+ * still reads as the scan: found by fuzzing). */
 const TCheckedClass* matchHeader(const uint8_t* data, size_t avail)
 {
 	if (avail < 1 || !(data[0] & 0x80)) return nullptr;
 	const size_t len = data[0] & 0x7F;
 	if (avail < 1 + len) return nullptr;
+	const std::string_view stored = shortName(std::string_view(reinterpret_cast<const char*>(data + 1), len));
 	for (const auto& k : CHECKED)
-		if (std::strlen(k.name) == len && std::memcmp(data + 1, k.name, len) == 0) return &k;
+		if (shortName(k.name) == stored) return &k;
 	return nullptr;
 }
 }  // namespace
@@ -172,7 +185,7 @@ TDeclaredSizeCheck checkDeclaredSizes(const uint8_t* data, size_t avail, bool at
 {
 	const TCheckedClass* k = matchHeader(data, avail);
 	if (!k) return {};
-	const size_t versionAt = 1 + std::strlen(k->name);
+	const size_t versionAt = 1 + (data[0] & 0x7F);
 	CLayoutCursor c(data, avail, at_end);
 	if (!c.have(versionAt, 1)) return c.missing();
 	const uint8_t version = c.byte(versionAt);
