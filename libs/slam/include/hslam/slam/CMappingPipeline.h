@@ -33,6 +33,7 @@
 #include <hslam/io/CRawlogReader.h>
 #include <hslam/maps/CLaserGridInserter.h>
 #include <hslam/maps/CTiledOccupancyGrid.h>
+#include <hslam/slam/CDynamicMappingStage.h>
 #include <hslam/slam/CLoopClosureStage.h>
 #include <hslam/slam/COdometryTracker.h>
 #include <hslam/slam/CScanArchive.h>
@@ -81,6 +82,9 @@ class CMappingPipeline
 	/** Loads and checks all pipeline sections from `cfg`; throws
 	 * common::config_error with "[section] key" on a bad value. */
 	explicit CMappingPipeline(const mrpt::config::CConfigFileBase& cfg);
+	/** Not copyable nor movable: the dynamic-mapping stage points at the grids. */
+	CMappingPipeline(const CMappingPipeline&) = delete;
+	CMappingPipeline& operator=(const CMappingPipeline&) = delete;
 
 	void processEntry(const io::TRawlogEntry& entry);
 	/** End of the input: with the loop-closure stage on and the graph
@@ -116,7 +120,7 @@ class CMappingPipeline
 	std::string poseEstimatorName() const { return m_estimator->name(); }
 
 	/** Dynamic object filter ([dynamic_objects] enabled = true), else null. */
-	const dynamic::CDynamicObjectFilter* dynamicFilter() const { return m_dynamicFilter.get(); }
+	const dynamic::CDynamicObjectFilter* dynamicFilter() const { return m_dynamicStage.filter(); }
 	/** Live leg and person tracks after every scan (for tracks.csv). */
 	const std::vector<dynamic::TTrackRow>& trackRows() const { return m_trackRows; }
 	/** A scan and the filter state after it, kept for debug images. */
@@ -159,13 +163,13 @@ class CMappingPipeline
 	/** Beams on people predicted from the filter's earlier tracks (empty: none). */
 	std::vector<bool> peopleBeforeMatching(const common::TRangeData& scan, const TOdometryIncrement& increment) const;
 	static constexpr double kPredictedPoseMargin_m = 0.2;  //!< odometry error over one scan interval, generously
-	/** Runs the dynamic object filter; returns its per-beam mask or null. */
-	const std::vector<bool>* filterDynamicObjects(const mrpt::obs::CObservation2DRangeScan& scan,
+	/** Runs the dynamic object filter; returns what the grids receive with the scan. */
+	const TDynamicMapUpdate& filterDynamicObjects(const mrpt::obs::CObservation2DRangeScan& scan,
 												  const mrpt::poses::CPose2D& pose);
 	/** Hands the scan to the loop-closure stage and the scan archive. */
 	void updateLoopClosure(const mrpt::obs::CObservation2DRangeScan& scan, const common::TRangeData& rangeData,
 						   const TPoseEstimate& estimate, const std::vector<bool>& onPeople,
-						   const std::vector<bool>* excluded);
+						   const TDynamicMapUpdate& update);
 
 	common::CStageTimer m_timer;  // first: the estimator keeps a reference to it
 	TProcessOptions m_processOptions;
@@ -178,7 +182,8 @@ class CMappingPipeline
 	bool m_keepSensorMaps = false;
 	mrpt::poses::CPose2D m_lastEstimate;  //!< pose at the latest scan (origin before the first)
 	dynamic::CDynamicObjectFilter::TOptions m_dynamicOptions;
-	std::unique_ptr<dynamic::CDynamicObjectFilter> m_dynamicFilter;
+	CDynamicMappingStage m_dynamicStage;  //!< filter -> late exclusions -> insertion, into m_grid (and m_laserOnly)
+	size_t m_laserOnlyIndex = 0;  //!< m_laserOnly's grid in m_dynamicStage
 	std::vector<dynamic::TTrackRow> m_trackRows;
 	size_t m_debugFramesMax = 0;
 	std::vector<TDebugFrame> m_debugFrames;
