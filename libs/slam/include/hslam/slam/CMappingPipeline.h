@@ -1,8 +1,9 @@
 /* hslam: the mapping pipeline, the one place where the stages of thesis
  * figure 55 are wired together and timed. Per laser scan:
- *     odometry increment -> pose estimation -> tiled grid update (laser)
- *     ... -> dynamic object filter (thesis 4.7; beams hitting confirmed
- *     moving people are not marked occupied) -> tiled grid update (laser)
+ *     odometry increment -> pose estimation -> dynamic-mapping stage
+ *     (CDynamicMappingStage: dynamic object filter, thesis 4.7 -> late
+ *     exclusions undone exactly -> tiled grid update (laser), beams hitting
+ *     confirmed moving people not marked occupied)
  * Per sonar ring observation (CObservationRange, CSonarMappingStage):
  *     pose = estimate at the latest laser scan + odometry since that scan
  *     -> sonar grid update (4.6.2 iii-iv, weighted against the laser)
@@ -19,7 +20,7 @@
  * loop-closure stage (CLoopClosureStage: keyframes -> pose graph -> loop
  * closure -> optimisation) and into a compact scan archive (CScanArchive);
  * finish() then re-inserts every scan at its corrected pose into a fresh grid
- * if the graph was optimised (the same CLaserGridInserter path as online).
+ * if the graph was optimised (the same CDynamicMappingStage path as online).
  *
  * INI sections read (see config_ini/hslam-default.ini): [process], [grid],
  * [laser_model], [pose_estimation], [dynamic_objects], [sonar_model], [tbf],
