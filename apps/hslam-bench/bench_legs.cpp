@@ -26,6 +26,7 @@
 #include <hslam/maps/CLaserGridInserter.h>
 #include <hslam/maps/grid_rendering.h>
 #include <hslam/matching/icp_odometry.h>
+#include <hslam/slam/CDynamicMappingStage.h>
 #include <mrpt/system/datetime.h>
 
 #include <algorithm>
@@ -120,20 +121,20 @@ TTrailResult trailOnStaticLog(const dynamic::CDynamicObjectFilter::TOptions& opt
 	maps::CLaserGridInserter inserter(laser);
 	maps::CTiledOccupancyGrid without, with, reference;
 	const mrpt::poses::CPose2D origin;
-	dynamic::CDynamicObjectFilter filter(options, classifier);
+	slam::CDynamicMappingStage stage(inserter, std::make_unique<dynamic::CDynamicObjectFilter>(options, classifier));
+	stage.addGrid(with);
 	TTrailResult r;
 	for (const auto& s : scans)
 	{
 		const auto t0 = std::chrono::steady_clock::now();
-		const auto& frame = filter.process(*s, origin, mrpt::Clock::toDouble(s->timestamp));
+		const auto& update = stage.filterScan(*s, origin, mrpt::Clock::toDouble(s->timestamp));
 		r.filter_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 		inserter.insert(without, origin, *s);
-		inserter.insert(with, origin, *s, &frame.beam_is_dynamic);
-		dynamic::undoOccupiedHits(with, frame.retro_clear_world, inserter.options().occupied_probability);
-		r.masked_beams += frame.dynamicBeams();
+		stage.insertScan(0, *s, origin, update);  // late exclusions, then the scan with its mask
+		r.masked_beams += stage.filter()->lastFrame().dynamicBeams();
 		++r.scans;
 	}
-	r.person_tracks = static_cast<size_t>(filter.personTracker().createdTracks());
+	r.person_tracks = static_cast<size_t>(stage.filter()->personTracker().createdTracks());
 	const auto background = medianScan(scans);
 	for (int k = 0; k < 20; ++k) inserter.insert(reference, origin, background);
 	r.static_cells = dynamic::occupiedCells(reference).size();

@@ -25,6 +25,7 @@
 #include <hslam/io/CGzLineReader.h>
 #include <hslam/maps/CLaserGridInserter.h>
 #include <hslam/maps/grid_rendering.h>
+#include <hslam/slam/CDynamicMappingStage.h>
 #include <mrpt/system/datetime.h>
 
 #include <algorithm>
@@ -87,9 +88,11 @@ TSimResult runSample(const fs::path& dir, const dynamic::CDynamicObjectFilter::T
 
 	TSimResult r;
 	r.people = personIds.size();
-	dynamic::CDynamicObjectFilter filter(options);
 	maps::CLaserGridInserter inserter;
 	maps::CTiledOccupancyGrid without, with;
+	slam::CDynamicMappingStage stage(inserter, std::make_unique<dynamic::CDynamicObjectFilter>(options));
+	stage.addGrid(with);
+	const dynamic::CDynamicObjectFilter& filter = *stage.filter();
 	std::set<std::pair<int, int>> personCells, staticCells;
 	std::map<int, int> lastTrackOf;  // true person -> last matched track id
 	std::map<int, double> lastMatch_s;  // true person -> time of that match
@@ -98,12 +101,12 @@ TSimResult runSample(const fs::path& dir, const dynamic::CDynamicObjectFilter::T
 		const auto& scan = *scans[i];
 		const mrpt::poses::CPose2D pose(truth[i].pose);
 		const auto t0 = std::chrono::steady_clock::now();
-		const auto& frame = filter.process(scan, pose, mrpt::Clock::toDouble(scan.timestamp));
+		const auto& update = stage.filterScan(scan, pose, mrpt::Clock::toDouble(scan.timestamp));
 		r.filter_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+		const dynamic::TDynamicFrame& frame = filter.lastFrame();
 		++r.scans;
 		inserter.insert(without, pose, scan);
-		inserter.insert(with, pose, scan, &frame.beam_is_dynamic);
-		dynamic::undoOccupiedHits(with, frame.retro_clear_world, inserter.options().occupied_probability);
+		stage.insertScan(0, scan, pose, update);  // late exclusions, then the scan with its mask
 
 		const mrpt::poses::CPose2D sensor = pose + mrpt::poses::CPose2D(scan.sensorPose);
 		for (size_t b = 0; b < scan.getScanSize(); ++b)

@@ -63,30 +63,3 @@ TEST(PipelineExclusion, BadDynamicOptionsNameTheSection)
 		EXPECT_NE(std::string(e.what()).find("[dynamic_objects] find_interv_bands_m"), std::string::npos) << e.what();
 	}
 }
-
-TEST(PipelineExclusion, LateExclusionUndoesExactlyThePersonHits)
-{
-	// A beam hits a cell twice (a person before confirmation) and once more
-	// (static): undoing the two person hits leaves exactly the one static hit.
-	// (Sensor model 0.7 so that three hits stay below the 0.98 clamp.)
-	hslam::maps::CTiledOccupancyGrid grid, reference;
-	hslam::maps::CLaserGridInserter::TOptions laser;
-	laser.occupied_probability = 0.7;
-	hslam::maps::CLaserGridInserter inserter(laser);
-	mrpt::obs::CObservation2DRangeScan scan;
-	scan.aperture = 0.001f;  // two beams, both along x
-	scan.resizeScan(2);
-	for (size_t b = 0; b < 2; ++b)
-	{
-		scan.setScanRange(b, 2.03f);
-		scan.setScanRangeValidity(b, b == 0);
-	}
-	for (int k = 0; k < 3; ++k) inserter.insert(grid, {}, scan);
-	inserter.insert(reference, {}, scan);
-	const mrpt::math::TPoint2D end(2.03 * std::cos(-0.0005), 2.03 * std::sin(-0.0005));  // beam 0's end point
-	const std::vector<mrpt::math::TPoint2D> personHits = {end, end};
-	hslam::dynamic::undoOccupiedHits(grid, personHits, inserter.options().occupied_probability);
-	const auto c = grid.geometry().cellOf(end.x, end.y);
-	EXPECT_NEAR(grid.occupancyProbability(c), reference.occupancyProbability(c), 1e-4);  // int16 log-odds cells (maps): ~1e-4 quantisation
-	EXPECT_NEAR(grid.occupancyProbability(c), 0.7, 1e-4);  // int16 log-odds cells (maps): ~1e-4 quantisation
-}

@@ -121,6 +121,8 @@ const TDynamicFrame& CDynamicObjectFilter::process(const mrpt::obs::CObservation
 												   const mrpt::poses::CPose2D& robotPose, double t_s)
 {
 	m_frame = TDynamicFrame();
+	m_frame.scan_index = m_scans++;
+	m_frame.pending_since_scan = m_frame.scan_index + 1;
 	m_frame.t_s = t_s;
 	m_frame.robot_pose = robotPose;
 	m_frame.legs = m_detector.detect(scan);
@@ -196,7 +198,7 @@ void CDynamicObjectFilter::collectLateExclusions(const mrpt::obs::CObservation2D
 	{
 		const auto it = m_pendingHits.find(t.id);
 		if (t.state != ETrackState::dynamic || it == m_pendingHits.end()) continue;
-		m_frame.retro_clear_world.insert(m_frame.retro_clear_world.end(), it->second.begin(), it->second.end());
+		m_frame.retro_clear_beams.insert(m_frame.retro_clear_beams.end(), it->second.begin(), it->second.end());
 		m_pendingHits.erase(it);
 	}
 	// 2. Beams inserted as occupied now that would have been masked if their
@@ -233,13 +235,13 @@ void CDynamicObjectFilter::collectLateExclusions(const mrpt::obs::CObservation2D
 		}
 		if (personOfBeam[b] < 0) continue;
 		auto& pending = m_pendingHits[personOfBeam[b]];
-		mrpt::math::TPoint2D w;
-		robotPose.composePoint(x, y, w.x, w.y);
-		pending.push_back(w);
+		pending.push_back({m_frame.scan_index, b});
 		if (pending.size() > cap) pending.erase(pending.begin());
 	}
 	for (auto it = m_pendingHits.begin(); it != m_pendingHits.end();)
 		it = m_persons.find(it->first) ? std::next(it) : m_pendingHits.erase(it);
+	for (const auto& [id, pending] : m_pendingHits)
+		if (!pending.empty()) m_frame.pending_since_scan = std::min(m_frame.pending_since_scan, pending.front().scan);
 }
 
 void CDynamicObjectFilter::buildMask(const mrpt::obs::CObservation2DRangeScan& scan,

@@ -36,15 +36,4 @@ std::vector<maps::TGlobalCell> cellsNotIn(const maps::CTiledOccupancyGrid& grid,
 	return out;
 }
 
-void undoOccupiedHits(maps::CTiledOccupancyGrid& grid, const std::vector<mrpt::math::TPoint2D>& points,
-					  double occupiedProbability)
-{
-	const float undo = -static_cast<float>(std::log(occupiedProbability / (1 - occupiedProbability)));
-	for (const auto& p : points)
-	{
-		const auto c = grid.geometry().cellOf(p.x, p.y);
-		if (grid.isObserved(c)) grid.updateCell(c, undo);
-	}
-}
-
 }  // namespace hslam::dynamic

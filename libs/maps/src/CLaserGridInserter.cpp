@@ -1,6 +1,8 @@
 #include <hslam/maps/CLaserGridInserter.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace hslam::maps
 {
@@ -13,7 +15,7 @@ CLaserGridInserter::CLaserGridInserter(const TOptions& options)
 
 TLaserInsertStats CLaserGridInserter::insert(CTiledOccupancyGrid& grid, const mrpt::poses::CPose2D& robotPose,
 											 const mrpt::obs::CObservation2DRangeScan& scan,
-											 const std::vector<bool>* hitIsExcluded)
+											 const std::vector<bool>* hitIsExcluded, TLaserInsertionRecord* record)
 {
 	TLaserInsertStats stats;
 	const mrpt::poses::CPose2D sensor = robotPose + mrpt::poses::CPose2D(scan.sensorPose);
@@ -48,13 +50,41 @@ TLaserInsertStats CLaserGridInserter::insert(CTiledOccupancyGrid& grid, const mr
 		// Beam end point: sensor frame -> world frame.
 		const double lx = range * dirs.ccos[i], ly = range * dirs.csin[i];
 		const TGlobalCell end = geo.cellOf(sensor.x() + c * lx - s * ly, sensor.y() + s * lx + c * ly);
+		const TLogOddsCell before = (record && hit) ? grid.rawCell(end) : kUnknownCell;
 		stats.cells_updated += grid.updateRay(origin, end, m_freeLogOdds, hit ? m_occupiedLogOdds : m_freeLogOdds);
+		if (record && hit)
+			record->hits.push_back({i, end, before, grid.rawCell(end) - (before == kUnknownCell ? 0 : before)});
 		if (hit)
 			++stats.beams_hit;
 		else
 			++stats.beams_free_only;
 	}
 	return stats;
+}
+
+size_t CLaserGridInserter::undo(CTiledOccupancyGrid& grid, const TLaserInsertionRecord& record,
+								const std::vector<size_t>& beams)
+{
+	size_t undone = 0;
+	for (auto it = record.hits.rbegin(); it != record.hits.rend(); ++it)
+	{
+		if (std::find(beams.begin(), beams.end(), it->beam) == beams.end()) continue;
+		const int after = (it->before == kUnknownCell ? 0 : it->before) + it->applied;
+		const TLogOddsCell now = grid.rawCell(it->cell);
+		// Unchanged since the hit (a later update of a saturated cell may have
+		// applied 0 unseen, hence not at the clamp): back to the value before,
+		// bit for bit, unknown included. Else subtract what the hit applied.
+		if (now == after && std::abs(after) < grid.clampCellUnits())
+			grid.setRawCell(it->cell, it->before);
+		else
+		{
+			TLogOddsCell v = now;
+			CTile::add(v, -it->applied, grid.clampCellUnits());
+			grid.setRawCell(it->cell, v);
+		}
+		++undone;
+	}
+	return undone;
 }
 
 }  // namespace hslam::maps

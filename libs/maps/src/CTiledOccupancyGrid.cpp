@@ -154,6 +154,18 @@ float CTiledOccupancyGrid::logOdds(const TGlobalCell& c) const
 
 double CTiledOccupancyGrid::occupancyProbability(const TGlobalCell& c) const { return logOddsToProbability(logOdds(c)); }
 
+TLogOddsCell CTiledOccupancyGrid::rawCell(const TGlobalCell& c) const
+{
+	const CTile* tile = findTile(m_geometry.tileOf(c));
+	return tile ? tile->raw(m_geometry.localCellOf(c)) : kUnknownCell;
+}
+
+void CTiledOccupancyGrid::setRawCell(const TGlobalCell& c, TLogOddsCell v)
+{
+	selectTileOf(c);
+	m_cachedTile->setRaw(cachedLocal(c), v);
+}
+
 bool CTiledOccupancyGrid::isObserved(const TGlobalCell& c) const
 {
 	const CTile* tile = findTile(m_geometry.tileOf(c));

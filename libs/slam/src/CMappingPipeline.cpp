@@ -1,5 +1,4 @@
 #include <hslam/common/options_io.h>
-#include <hslam/dynamic/occupied_cells.h>
 #include <hslam/slam/CMappingPipeline.h>
 #include <hslam/slam/CLocalMapPoseEstimator.h>
 #include <hslam/slam/CScanMatchingPoseEstimator.h>
@@ -26,6 +25,27 @@ std::vector<std::string> CMappingPipeline::sections()
 	return s;
 }
 
+namespace
+{
+/** The dynamic object filter, or null when [dynamic_objects] is disabled. */
+std::unique_ptr<dynamic::CDynamicObjectFilter> createDynamicFilter(const dynamic::CDynamicObjectFilter::TOptions& o)
+{
+	if (!o.enabled) return nullptr;
+	try
+	{
+		return std::make_unique<dynamic::CDynamicObjectFilter>(o);
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw common::config_error(std::string("[dynamic_objects] ") + e.what());
+	}
+	catch (const std::runtime_error& e)  // classifier_model missing or not a model
+	{
+		throw common::config_error(std::string("[dynamic_objects] classifier_model: ") + e.what());
+	}
+}
+}  // namespace
+
 CMappingPipeline::CMappingPipeline(const mrpt::config::CConfigFileBase& cfg)
 	: m_processOptions(common::loadedOptions<TProcessOptions>(cfg, "process")),
 	  m_poseOptions(common::loadedOptions<TPoseEstimationOptions>(cfg, "pose_estimation")),
@@ -34,6 +54,7 @@ CMappingPipeline::CMappingPipeline(const mrpt::config::CConfigFileBase& cfg)
 	  m_sonar(common::loadedOptions<TSonarMappingOptions>(cfg, "sonar_model"), common::loadedOptions<TTbfStageOptions>(cfg, "tbf")),
 	  m_vision(cfg),
 	  m_dynamicOptions(common::loadedOptions<dynamic::CDynamicObjectFilter::TOptions>(cfg, "dynamic_objects")),
+	  m_dynamicStage(m_laserInserter, createDynamicFilter(m_dynamicOptions)),
 	  m_estimator(createPoseEstimator(m_poseOptions, cfg, m_timer)),
 	  m_odometry(common::loadedOptions<calib::TOdometryCorrection>(cfg, "odometry_correction")),
 	  m_loopOptions(common::loadedOptions<TLoopClosureStageOptions>(cfg, "loop_closure")),
@@ -47,21 +68,7 @@ CMappingPipeline::CMappingPipeline(const mrpt::config::CConfigFileBase& cfg)
 		other.method = "map";
 		m_localMapDefaults = std::make_unique<CLocalMapPoseEstimator>(other, cfg, m_timer);
 	}
-	if (m_dynamicOptions.enabled)
-	{
-		try
-		{
-			m_dynamicFilter = std::make_unique<dynamic::CDynamicObjectFilter>(m_dynamicOptions);
-		}
-		catch (const std::invalid_argument& e)
-		{
-			throw common::config_error(std::string("[dynamic_objects] ") + e.what());
-		}
-		catch (const std::runtime_error& e)  // classifier_model missing or not a model
-		{
-			throw common::config_error(std::string("[dynamic_objects] classifier_model: ") + e.what());
-		}
-	}
+	m_dynamicStage.addGrid(m_grid);
 }
 
 void CMappingPipeline::saveOptions(mrpt::config::CConfigFileBase& out) const
@@ -85,7 +92,10 @@ void CMappingPipeline::keepSensorMaps()
 {
 	m_keepSensorMaps = true;
 	if (m_sonar.mappingOptions().enabled && !m_laserOnly)
+	{
 		m_laserOnly = std::make_unique<maps::CTiledOccupancyGrid>(m_grid.options());
+		m_laserOnlyIndex = m_dynamicStage.addGrid(*m_laserOnly);
+	}
 	if (!m_sonar.sonarOnlyMap()) m_sonar.keepSonarOnlyMap(m_grid.options());
 }
 
@@ -124,8 +134,8 @@ void CMappingPipeline::processObservation(const mrpt::obs::CObservation::Ptr& ob
 		const TOdometryIncrement pending = m_odometry.pendingIncrement();
 		const size_t visionRows = m_vision.rows().size();
 		m_vision.process(*image, pending.known ? std::optional(m_deadReckoningPose + pending.delta) : std::nullopt, m_timer);
-		if (m_dynamicFilter && m_dynamicOptions.camera_cues.enabled && m_vision.rows().size() > visionRows)
-			m_dynamicFilter->addCameraCues(cameraCues(m_vision.rows().back()), m_vision.rows().back().t_s);
+		if (m_dynamicStage.filter() && m_dynamicOptions.camera_cues.enabled && m_vision.rows().size() > visionRows)
+			m_dynamicStage.filter()->addCameraCues(cameraCues(m_vision.rows().back()), m_vision.rows().back().t_s);
 	}
 	else if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(obs))
 	{
@@ -161,13 +171,13 @@ void CMappingPipeline::processScan(const mrpt::obs::CObservation2DRangeScan& sca
 		estimate = m_estimator->update(increment, rangeData, onPeople.empty() ? nullptr : &onPeople);
 	}
 	const mrpt::poses::CPose2D pose = estimate.pose;
-	const std::vector<bool>* excluded = filterDynamicObjects(scan, pose);
+	const TDynamicMapUpdate& update = filterDynamicObjects(scan, pose);
 	{
 		common::CStageTimer::CScope t(m_timer, "grid_update");
-		m_laserInserter.insert(m_grid, pose, scan, excluded);
+		m_dynamicStage.insertScan(0, scan, pose, update);
 	}
-	if (m_laserOnly) m_laserInserter.insert(*m_laserOnly, pose, scan, excluded);  // untimed: images only
-	if (m_loop) updateLoopClosure(scan, rangeData, estimate, onPeople, excluded);
+	if (m_laserOnly) m_dynamicStage.insertScan(m_laserOnlyIndex, scan, pose, update);  // untimed: images only
+	if (m_loop) updateLoopClosure(scan, rangeData, estimate, onPeople, update);
 	m_lastEstimate = pose;
 	m_trajectory.push_back(timedPose(scan, pose));
 	m_odometryTrajectory.push_back(timedPose(scan, m_deadReckoningPose));
@@ -179,10 +189,10 @@ void CMappingPipeline::processScan(const mrpt::obs::CObservation2DRangeScan& sca
 
 void CMappingPipeline::updateLoopClosure(const mrpt::obs::CObservation2DRangeScan& scan,
 										 const common::TRangeData& rangeData, const TPoseEstimate& estimate,
-										 const std::vector<bool>& onPeople, const std::vector<bool>* excluded)
+										 const std::vector<bool>& onPeople, const TDynamicMapUpdate& update)
 {
 	// Beams on people (confirmed by the filter, or predicted before matching) are not keyframe points.
-	std::vector<bool> notStatic = excluded ? *excluded : std::vector<bool>();
+	std::vector<bool> notStatic = update.excluded;
 	if (!onPeople.empty())
 	{
 		notStatic.resize(onPeople.size(), false);
@@ -193,9 +203,7 @@ void CMappingPipeline::updateLoopClosure(const mrpt::obs::CObservation2DRangeSca
 		const auto result = m_loop->process(estimate, rangeData, notStatic.empty() ? nullptr : &notStatic);
 		if (result && result->optimized) m_timer.add("loop_closure_optimize", result->optimization.time_ms * 1e-3);
 	}
-	m_scanArchive.add(scan, excluded,
-					  m_dynamicFilter ? m_dynamicFilter->lastFrame().retro_clear_world : std::vector<mrpt::math::TPoint2D>(),
-					  estimate.pose);
+	m_scanArchive.add(scan, update);
 }
 
 void CMappingPipeline::finish()
@@ -239,25 +247,23 @@ void CMappingPipeline::processSonar(const mrpt::obs::CObservationRange& obs)
 std::vector<bool> CMappingPipeline::peopleBeforeMatching(const common::TRangeData& scan,
 														 const TOdometryIncrement& increment) const
 {
-	if (!m_dynamicFilter || !m_dynamicOptions.exclude_from_matching) return {};
+	const dynamic::CDynamicObjectFilter* filter = m_dynamicStage.filter();
+	if (!filter || !m_dynamicOptions.exclude_from_matching) return {};
 	const mrpt::poses::CPose2D predicted = increment.known ? m_lastEstimate + increment.delta : m_lastEstimate;
-	return m_dynamicFilter->predictedDynamicBeams(scan, predicted, scan.t_s, kPredictedPoseMargin_m);
+	return filter->predictedDynamicBeams(scan, predicted, scan.t_s, kPredictedPoseMargin_m);
 }
 
-const std::vector<bool>* CMappingPipeline::filterDynamicObjects(const mrpt::obs::CObservation2DRangeScan& scan,
+const TDynamicMapUpdate& CMappingPipeline::filterDynamicObjects(const mrpt::obs::CObservation2DRangeScan& scan,
 																const mrpt::poses::CPose2D& pose)
 {
-	if (!m_dynamicFilter) return nullptr;
+	if (!m_dynamicStage.filter()) return m_dynamicStage.filterScan(scan, pose, 0.0);  // nothing to filter
 	common::CStageTimer::CScope t(m_timer, "dynamic_objects");
-	const auto& frame = m_dynamicFilter->process(scan, pose, mrpt::Clock::toDouble(scan.timestamp));
-	dynamic::undoOccupiedHits(m_grid, frame.retro_clear_world, m_laserInserter.options().occupied_probability);
-	if (m_laserOnly)
-		dynamic::undoOccupiedHits(*m_laserOnly, frame.retro_clear_world,
-								  m_laserInserter.options().occupied_probability);
+	const auto& update = m_dynamicStage.filterScan(scan, pose, mrpt::Clock::toDouble(scan.timestamp));
+	const auto& frame = m_dynamicStage.filter()->lastFrame();
 	const size_t scanIndex = m_counters.laser_scans - 1;
 	dynamic::appendTrackRows(frame, scanIndex, m_trackRows);
 	if (m_debugFrames.size() < m_debugFramesMax && !frame.legs.empty()) m_debugFrames.push_back({scanIndex, scan, frame});
-	return &frame.beam_is_dynamic;
+	return update;
 }
 
 }  // namespace hslam::slam

@@ -1,4 +1,4 @@
-#include <hslam/dynamic/occupied_cells.h>
+#include <hslam/slam/CDynamicMappingStage.h>
 #include <hslam/slam/CScanArchive.h>
 
 #include <stdexcept>
@@ -23,8 +23,7 @@ uint16_t CScanArchive::geometryOf(const mrpt::obs::CObservation2DRangeScan& scan
 	return static_cast<uint16_t>(m_prototypes.size() - 1);
 }
 
-void CScanArchive::add(const mrpt::obs::CObservation2DRangeScan& scan, const std::vector<bool>* excludedBeams,
-					   const std::vector<mrpt::math::TPoint2D>& retroClearWorld, const mrpt::poses::CPose2D& onlinePose)
+void CScanArchive::add(const mrpt::obs::CObservation2DRangeScan& scan, const TDynamicMapUpdate& update)
 {
 	TStoredScan s;
 	s.geometry = geometryOf(scan);
@@ -32,14 +31,7 @@ void CScanArchive::add(const mrpt::obs::CObservation2DRangeScan& scan, const std
 	s.range_m.resize(n);
 	s.valid.resize(n);
 	for (size_t i = 0; i < n; ++i) s.range_m[i] = scan.getScanRange(i), s.valid[i] = scan.getScanRangeValidity(i);
-	if (excludedBeams) s.excluded = *excludedBeams;
-	const mrpt::poses::CPose2D toRobot = -onlinePose;
-	for (const auto& p : retroClearWorld)
-	{
-		double x, y;
-		toRobot.composePoint(p.x, p.y, x, y);
-		s.retro_clear_robot.emplace_back(static_cast<float>(x), static_cast<float>(y));
-	}
+	s.update = update;
 	m_scans.push_back(std::move(s));
 }
 
@@ -57,21 +49,13 @@ void CScanArchive::replay(maps::CTiledOccupancyGrid& grid, const std::vector<mrp
 						  maps::CLaserGridInserter& inserter) const
 {
 	if (poses.size() != m_scans.size()) throw std::invalid_argument("CScanArchive::replay: one pose per scan needed");
+	CDynamicMappingStage stage(inserter);  // no filter: the stored updates
+	stage.addGrid(grid);
 	mrpt::obs::CObservation2DRangeScan scan;
-	std::vector<mrpt::math::TPoint2D> retro;
 	for (size_t k = 0; k < m_scans.size(); ++k)
 	{
-		const TStoredScan& s = m_scans[k];
-		retro.clear();
-		for (const auto& p : s.retro_clear_robot)
-		{
-			double x, y;
-			poses[k].composePoint(p.x, p.y, x, y);
-			retro.emplace_back(x, y);
-		}
-		if (!retro.empty()) dynamic::undoOccupiedHits(grid, retro, inserter.options().occupied_probability);
-		restore(s, scan);
-		inserter.insert(grid, poses[k], scan, s.excluded.empty() ? nullptr : &s.excluded);
+		restore(m_scans[k], scan);
+		stage.insertScan(0, scan, poses[k], m_scans[k].update);
 	}
 }
 
@@ -79,8 +63,8 @@ size_t CScanArchive::memoryBytes() const
 {
 	size_t bytes = m_scans.capacity() * sizeof(TStoredScan);
 	for (const auto& s : m_scans)
-		bytes += s.range_m.capacity() * sizeof(float) + (s.valid.capacity() + s.excluded.capacity()) / 8 +
-				 s.retro_clear_robot.capacity() * sizeof(mrpt::math::TPoint2Df);
+		bytes += s.range_m.capacity() * sizeof(float) + (s.valid.capacity() + s.update.excluded.capacity()) / 8 +
+				 s.update.retro_clear.capacity() * sizeof(TRetroClear);
 	return bytes;
 }
 

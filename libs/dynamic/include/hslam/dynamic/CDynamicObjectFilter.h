@@ -45,12 +45,13 @@
  *    blob the detector rejects.
  *  - Late exclusion (the issue's "clear previously inserted cells"): a track
  *    needs a few scans to be confirmed, and the beams that hit it meanwhile
- *    were inserted as occupied. The filter keeps the world end points of
- *    those beams per person track (its leg segments, and for a tentative
- *    person the beams ending within mask_radius_m of it: what the mask
- *    would have covered; at most retro_clear_max_points) and hands them
- *    over once the track is confirmed (retro_clear_world), so the map can
- *    undo exactly those occupied updates (undoOccupiedHits).
+ *    were inserted as occupied. The filter keeps those beams (scan, beam)
+ *    per person track (its leg segments, and for a tentative person the
+ *    beams ending within mask_radius_m of it: what the mask would have
+ *    covered; at most retro_clear_max_points) and hands them over once the
+ *    track is confirmed (retro_clear_beams), so the map can take back
+ *    exactly the occupied updates those beams made (slam's
+ *    CDynamicMappingStage; the filter knows nothing of the laser model).
  * No file I/O: see dynamic_outputs.h for the CSV rows and debug images. */
 #pragma once
 
@@ -69,9 +70,18 @@
 
 namespace hslam::dynamic
 {
+/** A beam of an earlier scan; `scan` counts the scans the filter processed
+ * (0 = its first). */
+struct TBeamRef
+{
+	size_t scan = 0;
+	size_t beam = 0;
+};
+
 /** Everything the filter knows after one scan. */
 struct TDynamicFrame
 {
+	size_t scan_index = 0;  //!< scans processed before this one
 	double t_s = 0;
 	mrpt::poses::CPose2D robot_pose;  //!< robot pose in the world at the scan
 	std::vector<TLegSegment> legs;  //!< accepted leg segments (robot frame)
@@ -82,8 +92,10 @@ struct TDynamicFrame
 	std::vector<bool> leg_camera_cue;  //!< per leg: a camera cue covers it (empty unless camera_cue_evidence)
 	std::vector<double> leg_static_since_s;  //!< per leg: on static structure established since (+inf: not; see file comment)
 	std::vector<bool> beam_is_dynamic;  //!< per beam: hits a confirmed dynamic object
-	/** World end points of earlier beams that hit a track confirmed now (see file comment). */
-	std::vector<mrpt::math::TPoint2D> retro_clear_world;
+	/** Earlier beams that hit a track confirmed now (see file comment). */
+	std::vector<TBeamRef> retro_clear_beams;
+	/** The oldest scan a later retro_clear_beams can still name (scan_index + 1: none). */
+	size_t pending_since_scan = 0;
 	std::vector<TTrack> leg_tracks, person_tracks;  //!< live tracks after this scan
 	size_t dynamicBeams() const;
 };
@@ -107,7 +119,7 @@ class CDynamicObjectFilter
 		double free_space_max_range_m = 8.0;  //!< beams inserted into it up to this range
 		double free_space_behind_m = 0.08;  //!< where the inside of a leg is checked
 		double free_space_threshold = 0.4;  //!< occupancy below this = seen free
-		int retro_clear_max_points = 300;  //!< end points kept per unconfirmed person track (0: off)
+		int retro_clear_max_points = 300;  //!< beams kept per unconfirmed person track (0: off)
 		bool static_evidence = true;  //!< veto confirmation on established static structure
 		CStaticEvidenceGrid::TOptions static_grid;  //!< its grid (static_* keys)
 		TCameraCueOptions camera_cues;  //!< camera moving-object cues as motion evidence (CCameraCueBuffer.h)
@@ -192,7 +204,8 @@ class CDynamicObjectFilter
 	maps::CLaserGridInserter m_seenInserter;
 	CStaticEvidenceGrid m_static;  //!< static-world evidence (see file comment)
 	CCameraCueBuffer m_cues;  //!< recent camera cues (camera_cue_evidence)
-	std::map<int, std::vector<mrpt::math::TPoint2D>> m_pendingHits;  //!< person track id -> beam end points (world)
+	std::map<int, std::vector<TBeamRef>> m_pendingHits;  //!< person track id -> its beams, oldest first
+	size_t m_scans = 0;  //!< scans processed
 	TDynamicFrame m_frame;
 };
 

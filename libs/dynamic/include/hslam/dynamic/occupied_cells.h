@@ -18,10 +18,4 @@ std::vector<maps::TGlobalCell> cellsNotIn(const maps::CTiledOccupancyGrid& grid,
 										  const maps::CTiledOccupancyGrid& reference, int toleranceCells,
 										  double threshold = 0.5);
 
-/** Undoes one occupied Bayes update (sensor model `occupiedProbability`,
- * as CLaserGridInserter applies it) in the cell of each point: the late
- * exclusion of a person confirmed after its first scans. */
-void undoOccupiedHits(maps::CTiledOccupancyGrid& grid, const std::vector<mrpt::math::TPoint2D>& points,
-					  double occupiedProbability);
-
 }  // namespace hslam::dynamic

@@ -32,6 +32,24 @@ struct TLaserInsertStats
 	size_t cells_updated = 0;
 };
 
+/** One occupied update the inserter applied: the hit cell of `beam`, its raw
+ * value before the update and the delta actually applied after clamping
+ * (cell units; 0 on a cell already saturated). */
+struct TOccupiedHit
+{
+	size_t beam = 0;
+	TGlobalCell cell;
+	TLogOddsCell before = kUnknownCell;
+	int applied = 0;
+};
+
+/** The occupied updates of one insert() call, in the order applied: what
+ * CLaserGridInserter::undo needs to take a beam's hit back exactly. */
+struct TLaserInsertionRecord
+{
+	std::vector<TOccupiedHit> hits;
+};
+
 class CLaserGridInserter
 {
    public:
@@ -57,10 +75,21 @@ class CLaserGridInserter
 
 	/** Inserts one scan taken with the robot at `robotPose`. `hitIsExcluded`,
 	 * if given, has one flag per beam: flagged beams (e.g. hitting a person)
-	 * only clear their free part and never mark their hit cell occupied. */
+	 * only clear their free part and never mark their hit cell occupied.
+	 * `record`, if given, receives the occupied updates as applied. */
 	TLaserInsertStats insert(CTiledOccupancyGrid& grid, const mrpt::poses::CPose2D& robotPose,
 							 const mrpt::obs::CObservation2DRangeScan& scan,
-							 const std::vector<bool>* hitIsExcluded = nullptr);
+							 const std::vector<bool>* hitIsExcluded = nullptr,
+							 TLaserInsertionRecord* record = nullptr);
+
+	/** Takes back the occupied updates of `record` made by the beams listed
+	 * in `beams`, newest first: each cell loses exactly the delta its hit
+	 * applied (0 on a cell that was saturated), clamped, so insert + undo
+	 * gives back every cell's value bit for bit; a cell left below the clamp
+	 * and unchanged since the hit returns to its raw value before (unknown
+	 * included). Free-space updates are untouched. Returns the hits undone. */
+	static size_t undo(CTiledOccupancyGrid& grid, const TLaserInsertionRecord& record,
+					   const std::vector<size_t>& beams);
 
 	const TOptions& options() const { return m_options; }
 

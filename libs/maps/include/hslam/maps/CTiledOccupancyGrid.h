@@ -63,6 +63,8 @@ class CTile
 		v = static_cast<TLogOddsCell>(std::clamp(base + delta, -clamp, clamp));
 	}
 	void update(const TLocalCell& c, int delta, int clamp) { add(m_cells[index(c)], delta, clamp); }
+	/** A cell's raw value (kUnknownCell if never observed). */
+	TLogOddsCell raw(const TLocalCell& c) const { return m_cells[index(c)]; }
 	/** Sets a cell's raw value (deserialisation). */
 	void setRaw(const TLocalCell& c, TLogOddsCell v) { m_cells[index(c)] = v; }
 	size_t observedCount() const;
@@ -133,6 +135,14 @@ class CTiledOccupancyGrid
 	void clear();
 
 	float clampLogOdds() const { return m_clampLogOdds; }
+	/** The clamp in cell units (kLogOddsScale per nat). */
+	int clampCellUnits() const { return m_clampCellUnits; }
+
+	/** A cell's raw fixed-point value (kUnknownCell if never observed), for
+	 * exact bookkeeping of updates (CLaserGridInserter::undo). */
+	TLogOddsCell rawCell(const TGlobalCell& c) const;
+	/** Sets a cell's raw value (creates its tile if needed). */
+	void setRawCell(const TGlobalCell& c, TLogOddsCell v);
 
 	/** Raw access for serialisation: the tile (created if needed). */
 	CTile& tileForWriting(const TTileIndex& t) { return tileFor(t); }

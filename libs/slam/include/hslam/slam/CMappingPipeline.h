@@ -1,8 +1,9 @@
 /* hslam: the mapping pipeline, the one place where the stages of thesis
  * figure 55 are wired together and timed. Per laser scan:
- *     odometry increment -> pose estimation -> tiled grid update (laser)
- *     ... -> dynamic object filter (thesis 4.7; beams hitting confirmed
- *     moving people are not marked occupied) -> tiled grid update (laser)
+ *     odometry increment -> pose estimation -> dynamic-mapping stage
+ *     (CDynamicMappingStage: dynamic object filter, thesis 4.7 -> late
+ *     exclusions undone exactly -> tiled grid update (laser), beams hitting
+ *     confirmed moving people not marked occupied)
  * Per sonar ring observation (CObservationRange, CSonarMappingStage):
  *     pose = estimate at the latest laser scan + odometry since that scan
  *     -> sonar grid update (4.6.2 iii-iv, weighted against the laser)
@@ -19,7 +20,7 @@
  * loop-closure stage (CLoopClosureStage: keyframes -> pose graph -> loop
  * closure -> optimisation) and into a compact scan archive (CScanArchive);
  * finish() then re-inserts every scan at its corrected pose into a fresh grid
- * if the graph was optimised (the same CLaserGridInserter path as online).
+ * if the graph was optimised (the same CDynamicMappingStage path as online).
  *
  * INI sections read (see config_ini/hslam-default.ini): [process], [grid],
  * [laser_model], [pose_estimation], [dynamic_objects], [sonar_model], [tbf],
@@ -33,6 +34,7 @@
 #include <hslam/io/CRawlogReader.h>
 #include <hslam/maps/CLaserGridInserter.h>
 #include <hslam/maps/CTiledOccupancyGrid.h>
+#include <hslam/slam/CDynamicMappingStage.h>
 #include <hslam/slam/CLoopClosureStage.h>
 #include <hslam/slam/COdometryTracker.h>
 #include <hslam/slam/CScanArchive.h>
@@ -81,6 +83,9 @@ class CMappingPipeline
 	/** Loads and checks all pipeline sections from `cfg`; throws
 	 * common::config_error with "[section] key" on a bad value. */
 	explicit CMappingPipeline(const mrpt::config::CConfigFileBase& cfg);
+	/** Not copyable nor movable: the dynamic-mapping stage points at the grids. */
+	CMappingPipeline(const CMappingPipeline&) = delete;
+	CMappingPipeline& operator=(const CMappingPipeline&) = delete;
 
 	void processEntry(const io::TRawlogEntry& entry);
 	/** End of the input: with the loop-closure stage on and the graph
@@ -116,7 +121,7 @@ class CMappingPipeline
 	std::string poseEstimatorName() const { return m_estimator->name(); }
 
 	/** Dynamic object filter ([dynamic_objects] enabled = true), else null. */
-	const dynamic::CDynamicObjectFilter* dynamicFilter() const { return m_dynamicFilter.get(); }
+	const dynamic::CDynamicObjectFilter* dynamicFilter() const { return m_dynamicStage.filter(); }
 	/** Live leg and person tracks after every scan (for tracks.csv). */
 	const std::vector<dynamic::TTrackRow>& trackRows() const { return m_trackRows; }
 	/** A scan and the filter state after it, kept for debug images. */
@@ -159,13 +164,13 @@ class CMappingPipeline
 	/** Beams on people predicted from the filter's earlier tracks (empty: none). */
 	std::vector<bool> peopleBeforeMatching(const common::TRangeData& scan, const TOdometryIncrement& increment) const;
 	static constexpr double kPredictedPoseMargin_m = 0.2;  //!< odometry error over one scan interval, generously
-	/** Runs the dynamic object filter; returns its per-beam mask or null. */
-	const std::vector<bool>* filterDynamicObjects(const mrpt::obs::CObservation2DRangeScan& scan,
+	/** Runs the dynamic object filter; returns what the grids receive with the scan. */
+	const TDynamicMapUpdate& filterDynamicObjects(const mrpt::obs::CObservation2DRangeScan& scan,
 												  const mrpt::poses::CPose2D& pose);
 	/** Hands the scan to the loop-closure stage and the scan archive. */
 	void updateLoopClosure(const mrpt::obs::CObservation2DRangeScan& scan, const common::TRangeData& rangeData,
 						   const TPoseEstimate& estimate, const std::vector<bool>& onPeople,
-						   const std::vector<bool>* excluded);
+						   const TDynamicMapUpdate& update);
 
 	common::CStageTimer m_timer;  // first: the estimator keeps a reference to it
 	TProcessOptions m_processOptions;
@@ -178,7 +183,8 @@ class CMappingPipeline
 	bool m_keepSensorMaps = false;
 	mrpt::poses::CPose2D m_lastEstimate;  //!< pose at the latest scan (origin before the first)
 	dynamic::CDynamicObjectFilter::TOptions m_dynamicOptions;
-	std::unique_ptr<dynamic::CDynamicObjectFilter> m_dynamicFilter;
+	CDynamicMappingStage m_dynamicStage;  //!< filter -> late exclusions -> insertion, into m_grid (and m_laserOnly)
+	size_t m_laserOnlyIndex = 0;  //!< m_laserOnly's grid in m_dynamicStage
 	std::vector<dynamic::TTrackRow> m_trackRows;
 	size_t m_debugFramesMax = 0;
 	std::vector<TDebugFrame> m_debugFrames;
