@@ -101,7 +101,9 @@ TNavRun runOne(const std::string& method, const sim::TNavScenario& s, const sim:
 	const auto config = sim::closedLoopConfig(s.start, 1);
 	sim::CSimulator simulator(config, scene);
 	auto controller = makeController(method, s, o, mrptIni, config.simulation.start_time_s);
-	TNavRun run{method, s.world, sim::runClosedLoop(simulator, *controller, o.loop)};
+	TNavRun run;
+	run.method = method, run.world = s.world;
+	run.result = sim::runClosedLoop(simulator, *controller, o.loop);
 	const auto end = simulator.robot().truePose();
 	run.final_distance_m = std::hypot(end.x - s.targets.back().x, end.y - s.targets.back().y);
 	run.start = s.start;
