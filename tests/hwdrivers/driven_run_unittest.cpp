@@ -132,14 +132,24 @@ TEST(DrivenRunIntegration, ShortRunReachesBothTargetsWithoutCollisionAndMapsTheL
 	EXPECT_GT(minClearance, 0.2) << "collision";
 	std::printf("driven run: %zu true poses, min clearance %.3f m\n", truth.size(), minClearance);
 
-	// The batch map of the recording against the world's ground truth.
+	// The batch map of the recording (hslam-process) and the live map
+	// (hslam-navigate, scans at the odometry pose) against the world's ground
+	// truth. Measured over 9 runs (docs/nav.md, "The driven run"): overall
+	// 0.948-0.979 batch, 0.967-0.992 live; free cells 0.980-0.992; occupied
+	// cells 0.63-0.92 batch, 0.69-0.999 live (bimodal: runs with smeared walls,
+	// see docs/nav.md). Thresholds below the worst with margin.
 	const auto gt = hslam::sim::rasterizeWorld(scene.world, 0.05, 0.5);
-	const auto map = loadGridmap(out + "/map/map.gridmap.gz");
-	const auto a = compareWithTruth(map, gt, kStart, 0.1);
-	std::printf("map vs ground truth: %zu free cells (%.4f agree), %zu occupied (%.4f agree), overall %.4f\n", a.free,
-				double(a.freeAgreed) / std::max<size_t>(1, a.free), a.occupied,
-				double(a.occupiedAgreed) / std::max<size_t>(1, a.occupied), a.fraction());
-	EXPECT_GT(a.free, 2000u);
-	EXPECT_GT(a.occupied, 100u);
-	EXPECT_GT(a.fraction(), 0.0) << "threshold set from the measured value below";
+	for (const char* name : {"map/map.gridmap.gz", "nav/live_map.gridmap.gz"})
+	{
+		const auto a = compareWithTruth(loadGridmap(out + "/" + name), gt, kStart, 0.1);
+		const double freeOk = double(a.freeAgreed) / std::max<size_t>(1, a.free);
+		const double occOk = double(a.occupiedAgreed) / std::max<size_t>(1, a.occupied);
+		std::printf("%s vs ground truth: %zu free cells (%.4f agree), %zu occupied (%.4f agree), overall %.4f\n", name,
+					a.free, freeOk, a.occupied, occOk, a.fraction());
+		EXPECT_GT(a.free, 2000u) << name;
+		EXPECT_GT(a.occupied, 200u) << name;
+		EXPECT_GT(a.fraction(), 0.92) << name;
+		EXPECT_GT(freeOk, 0.95) << name;
+		EXPECT_GT(occOk, 0.5) << name;
+	}
 }
