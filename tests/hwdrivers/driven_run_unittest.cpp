@@ -134,12 +134,17 @@ TEST(DrivenRunIntegration, ShortRunReachesBothTargetsWithoutCollisionAndMapsTheL
 
 	// The batch map of the recording (hslam-process) and the live map
 	// (hslam-navigate, scans at the odometry pose) against the world's ground
-	// truth. Measured over 9 runs (docs/nav.md, "The driven run"): overall
-	// 0.948-0.979 batch, 0.967-0.992 live; free cells 0.980-0.992; occupied
-	// cells 0.63-0.92 batch, 0.69-0.999 live (bimodal: runs with smeared walls,
-	// see docs/nav.md). Thresholds below the worst with margin.
+	// truth. Measured over 13 runs (docs/nav.md, "The driven run"): overall
+	// 0.948-0.989 batch, 0.977-0.992 live; free cells 0.977-0.996; occupied
+	// cells 0.64-0.94 batch, 0.81-0.999 live. Thresholds below the worst with
+	// margin.
+	struct TCase
+	{
+		const char* file;
+		double minOccupiedAgreement;
+	};
 	const auto gt = hslam::sim::rasterizeWorld(scene.world, 0.05, 0.5);
-	for (const char* name : {"map/map.gridmap.gz", "nav/live_map.gridmap.gz"})
+	for (const auto& [name, minOcc] : {TCase{"map/map.gridmap.gz", 0.5}, TCase{"nav/live_map.gridmap.gz", 0.7}})
 	{
 		const auto a = compareWithTruth(loadGridmap(out + "/" + name), gt, kStart, 0.1);
 		const double freeOk = double(a.freeAgreed) / std::max<size_t>(1, a.free);
@@ -148,8 +153,8 @@ TEST(DrivenRunIntegration, ShortRunReachesBothTargetsWithoutCollisionAndMapsTheL
 					a.free, freeOk, a.occupied, occOk, a.fraction());
 		EXPECT_GT(a.free, 2000u) << name;
 		EXPECT_GT(a.occupied, 200u) << name;
-		EXPECT_GT(a.fraction(), 0.92) << name;
-		EXPECT_GT(freeOk, 0.95) << name;
-		EXPECT_GT(occOk, 0.5) << name;
+		EXPECT_GT(a.fraction(), 0.93) << name;
+		EXPECT_GT(freeOk, 0.96) << name;
+		EXPECT_GT(occOk, minOcc) << name;
 	}
 }
