@@ -58,8 +58,9 @@ std::vector<mrpt::math::TPoint2D> readTargetsFile(const std::string& path)
  * given in the world frame are moved into the odometry frame the controller
  * steers in (thesis 4.9: targets in the lab's frame). */
 std::vector<mrpt::math::TPoint2D> targetsInOdometryFrame(const std::vector<mrpt::math::TPoint2D>& world,
-														 const std::string& startText)
+														 const std::string& startText, const std::string& pioneerIni)
 {
+	if (pioneerIni.empty()) throw std::runtime_error("--start-pose is for --pioneer (the simulator knows its start)");
 	std::istringstream is(startText);
 	double x = 0, y = 0, yawDeg = 0;
 	std::string rest;
@@ -131,11 +132,7 @@ int main(int argc, char** argv)
 		if (targets.empty()) throw std::runtime_error("no target: give --targets, --targets-file or --thesis-trial");
 		if (simIni.empty() == pioneerArg.getValue().empty())
 			throw std::runtime_error("choose one robot: --sim INI (or --thesis-trial) or --pioneer INI");
-		if (startPoseArg.isSet())
-		{
-			if (pioneerArg.getValue().empty()) throw std::runtime_error("--start-pose is for --pioneer (the simulator knows its start)");
-			targets = targetsInOdometryFrame(targets, startPoseArg.getValue());
-		}
+		if (startPoseArg.isSet()) targets = targetsInOdometryFrame(targets, startPoseArg.getValue(), pioneerArg.getValue());
 		const double timeout_s = positive(timeoutArg.getValue(), "--timeout-s");
 
 		const std::string out = outArg.getValue();

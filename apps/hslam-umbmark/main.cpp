@@ -45,6 +45,17 @@ std::vector<calib::TUmbmarkEndpoint> runsFromPoses(const std::vector<calib::TPos
 	return split.endpoints;
 }
 
+/** --drive: drives the square (thesis 4.1), then reads the recording like -i. */
+std::vector<calib::TPosePair> driveAndRead(const std::string& driveIni, const std::string& outDir, std::string& source)
+{
+	const auto options = apps::loadDriveOptions(driveIni);
+	const auto rec = apps::driveUmbmark(driveIni, options, outDir);
+	std::cout << "drove " << options.runs_per_direction << " CW + " << options.runs_per_direction << " CCW squares of "
+			  << options.side_m << " m in " << rec.sim_time_s << " s (simulated); recording: " << rec.rawlog << "\n";
+	source = rec.rawlog;
+	return apps::readRawlogWithTruth(rec.rawlog, rec.truth);
+}
+
 int evaluateEndpointTable(const std::string& path, calib::TUmbmarkOptions options, const std::string& iniOut)
 {
 	const auto table = apps::readEndpointCsv(path);
@@ -124,15 +135,7 @@ int main(int argc, char** argv)
 			poses = apps::readWaypointFolder(source);
 		}
 		else if (driveArg.isSet())
-		{
-			const auto driveOptions = apps::loadDriveOptions(driveArg.getValue());
-			const auto rec = apps::driveUmbmark(driveArg.getValue(), driveOptions, driveOutArg.getValue());
-			std::cout << "drove " << driveOptions.runs_per_direction << " CW + " << driveOptions.runs_per_direction
-					  << " CCW squares of " << driveOptions.side_m << " m in " << rec.sim_time_s
-					  << " s (simulated); recording: " << rec.rawlog << "\n";
-			source = rec.rawlog;
-			poses = apps::readRawlogWithTruth(rec.rawlog, rec.truth);
-		}
+			poses = driveAndRead(driveArg.getValue(), driveOutArg.getValue(), source);
 		else
 		{
 			source = rawlogArg.getValue();

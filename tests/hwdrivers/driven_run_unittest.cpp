@@ -96,6 +96,29 @@ TAgreement compareWithTruth(const mrpt::maps::COccupancyGridMap2D& map, const mr
 		}
 	return a;
 }
+/** The true path (emulator, 20 Hz): each target reached in order, within
+ * the controller's 0.2 m plus the odometry's drift; never within 0.2 m of a
+ * static obstacle (the collision criterion of sim::runClosedLoop). */
+void checkTruePath(const hslam::common::TTrajectory2D& truth, const hslam::sim::CWorld& world)
+{
+	ASSERT_GT(truth.size(), 50u);
+	size_t next = 0;
+	double minClearance = std::numeric_limits<double>::infinity(), nearest = 1e9;
+	for (const auto& p : truth)
+	{
+		minClearance = std::min(minClearance, hslam::sim::clearance_m(world, {p.pose.x, p.pose.y}, false));
+		if (next < kTargets.size())
+		{
+			const double d = std::hypot(p.pose.x - kTargets[next].x, p.pose.y - kTargets[next].y);
+			nearest = std::min(nearest, d);
+			if (d < 0.3) ++next, nearest = 1e9;
+		}
+	}
+	EXPECT_EQ(next, kTargets.size()) << "true pose never within 0.3 m of target " << next + 1 << " (nearest " << nearest
+									 << " m)";
+	EXPECT_GT(minClearance, 0.2) << "collision";
+	std::printf("driven run: %zu true poses, min clearance %.3f m\n", truth.size(), minClearance);
+}
 }  // namespace
 
 TEST(DrivenRunIntegration, ShortRunReachesBothTargetsWithoutCollisionAndMapsTheLab)
@@ -109,42 +132,23 @@ TEST(DrivenRunIntegration, ShortRunReachesBothTargetsWithoutCollisionAndMapsTheL
 						  "map/map.gridmap.gz", "map/map.png", "truth.tum"})
 		EXPECT_TRUE(std::filesystem::exists(out + "/" + f)) << f;
 
-	// The true path (emulator, 20 Hz): each target reached in order, within
-	// the controller's 0.2 m plus the odometry's drift; never within 0.2 m of
-	// a static obstacle (the collision criterion of sim::runClosedLoop).
 	const auto scene = hslam::sim::loadSceneFile(kSrc + "/config_ini/sim-worlds/nav-lab.scene");
-	const auto truth = hslam::common::readTumFile(out + "/truth.tum");
-	ASSERT_GT(truth.size(), 50u);
-	size_t next = 0;
-	double minClearance = std::numeric_limits<double>::infinity(), nearest = 1e9;
-	for (const auto& p : truth)
-	{
-		minClearance = std::min(minClearance, hslam::sim::clearance_m(scene.world, {p.pose.x, p.pose.y}, false));
-		if (next < kTargets.size())
-		{
-			const double d = std::hypot(p.pose.x - kTargets[next].x, p.pose.y - kTargets[next].y);
-			nearest = std::min(nearest, d);
-			if (d < 0.3) ++next, nearest = 1e9;
-		}
-	}
-	EXPECT_EQ(next, kTargets.size()) << "true pose never within 0.3 m of target " << next + 1 << " (nearest " << nearest
-									 << " m)";
-	EXPECT_GT(minClearance, 0.2) << "collision";
-	std::printf("driven run: %zu true poses, min clearance %.3f m\n", truth.size(), minClearance);
+	checkTruePath(hslam::common::readTumFile(out + "/truth.tum"), scene.world);
 
 	// The batch map of the recording (hslam-process) and the live map
 	// (hslam-navigate, scans at the odometry pose) against the world's ground
-	// truth. Measured over 13 runs (docs/nav.md, "The driven run"): overall
-	// 0.948-0.989 batch, 0.977-0.992 live; free cells 0.977-0.996; occupied
-	// cells 0.64-0.94 batch, 0.81-0.999 live. Thresholds below the worst with
+	// truth. Measured over 24 runs (docs/nav.md, "The driven run"): overall
+	// 0.936-0.989 batch, 0.976-0.992 live; free cells 0.977-0.996; occupied
+	// cells 0.59-0.94 batch, 0.81-0.999 live. Thresholds below the worst with
 	// margin.
 	struct TCase
 	{
 		const char* file;
-		double minOccupiedAgreement;
+		double minOverall, minOccupied;
 	};
 	const auto gt = hslam::sim::rasterizeWorld(scene.world, 0.05, 0.5);
-	for (const auto& [name, minOcc] : {TCase{"map/map.gridmap.gz", 0.5}, TCase{"nav/live_map.gridmap.gz", 0.7}})
+	for (const auto& [name, minOverall, minOcc] :
+		 {TCase{"map/map.gridmap.gz", 0.90, 0.4}, TCase{"nav/live_map.gridmap.gz", 0.95, 0.7}})
 	{
 		const auto a = compareWithTruth(loadGridmap(out + "/" + name), gt, kStart, 0.1);
 		const double freeOk = double(a.freeAgreed) / std::max<size_t>(1, a.free);
@@ -153,7 +157,7 @@ TEST(DrivenRunIntegration, ShortRunReachesBothTargetsWithoutCollisionAndMapsTheL
 					a.free, freeOk, a.occupied, occOk, a.fraction());
 		EXPECT_GT(a.free, 2000u) << name;
 		EXPECT_GT(a.occupied, 200u) << name;
-		EXPECT_GT(a.fraction(), 0.93) << name;
+		EXPECT_GT(a.fraction(), minOverall) << name;
 		EXPECT_GT(freeOk, 0.96) << name;
 		EXPECT_GT(occOk, minOcc) << name;
 	}
