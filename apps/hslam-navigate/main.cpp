@@ -21,6 +21,8 @@
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/poses/CPoint2D.h>
+#include <mrpt/poses/CPose2D.h>
 
 #include <atomic>
 #include <csignal>
@@ -51,6 +53,29 @@ std::vector<mrpt::math::TPoint2D> readTargetsFile(const std::string& path)
 	return nav::parseTargetList(all, path);
 }
 
+/** --start-pose "x y yaw_deg": the robot's world pose at its odometry origin
+ * (the Pioneer zeroes its odometry at connection, reset_odometry). Targets
+ * given in the world frame are moved into the odometry frame the controller
+ * steers in (thesis 4.9: targets in the lab's frame). */
+std::vector<mrpt::math::TPoint2D> targetsInOdometryFrame(const std::vector<mrpt::math::TPoint2D>& world,
+														 const std::string& startText, const std::string& pioneerIni)
+{
+	if (pioneerIni.empty()) throw std::runtime_error("--start-pose is for --pioneer (the simulator knows its start)");
+	std::istringstream is(startText);
+	double x = 0, y = 0, yawDeg = 0;
+	std::string rest;
+	if (!(is >> x >> y >> yawDeg) || (is >> rest))
+		throw std::runtime_error("--start-pose: expected 'x_m y_m yaw_deg', got '" + startText + "'");
+	const mrpt::poses::CPose2D start(x, y, mrpt::DEG2RAD(yawDeg));
+	std::vector<mrpt::math::TPoint2D> out;
+	for (const auto& t : world)
+	{
+		const auto local = mrpt::poses::CPoint2D(t.x, t.y) - start;
+		out.push_back({local.x(), local.y()});
+	}
+	return out;
+}
+
 double positive(const std::string& text, const std::string& what)
 {
 	const auto v = common::tryParseDouble(text);
@@ -79,6 +104,11 @@ int main(int argc, char** argv)
 												"LIST", cmd);
 		TCLAP::ValueArg<std::string> targetsFileArg("", "targets-file", "Targets, one 'x y' per line", false, "", "FILE",
 													cmd);
+		TCLAP::ValueArg<std::string> startPoseArg(
+			"", "start-pose",
+			"With --pioneer: the robot's world pose 'x_m y_m yaw_deg' at its odometry origin; targets are then world "
+			"coordinates (default: targets in the odometry frame)",
+			false, "", "POSE", cmd);
 		TCLAP::ValueArg<std::string> navArg("c", "nav-config", "Controller INI (config_ini/nav-subsumption.ini)", false,
 											"", "NAV.ini", cmd);
 		TCLAP::ValueArg<std::string> outArg("o", "out", "Output folder (created; must not hold a previous run)", false,
@@ -102,6 +132,7 @@ int main(int argc, char** argv)
 		if (targets.empty()) throw std::runtime_error("no target: give --targets, --targets-file or --thesis-trial");
 		if (simIni.empty() == pioneerArg.getValue().empty())
 			throw std::runtime_error("choose one robot: --sim INI (or --thesis-trial) or --pioneer INI");
+		if (startPoseArg.isSet()) targets = targetsInOdometryFrame(targets, startPoseArg.getValue(), pioneerArg.getValue());
 		const double timeout_s = positive(timeoutArg.getValue(), "--timeout-s");
 
 		const std::string out = outArg.getValue();

@@ -3,11 +3,15 @@
  *   hslam-umbmark FOLDER                  simulator output (waypoints.csv + ground_truth.tum)
  *   hslam-umbmark -i RAWLOG [--truth TUM] a recording + the true poses
  *   hslam-umbmark --endpoints CSV --side-m L   end points typed in (thesis tables 1-2)
+ *   hslam-umbmark --drive DRIVE.ini [--drive-out DIR]   drives the square itself (simulated
+ *                                         P3-DX), records DIR/umbmark.rawlog + ground_truth.tum,
+ *                                         then evaluates that recording like -i
  *
  * Prints the per-run errors, centres of gravity, alpha, beta, R, the corrected
  * wheelbase, the encoder factors and E_max,syst, ending with "Ed=" and "Eb="
  * lines; -o writes the [odometry_correction] INI section. Exit 0 on success,
  * 1 on any error. */
+#include "umbmark_drive.h"
 #include "umbmark_inputs.h"
 #include "umbmark_report.h"
 
@@ -39,6 +43,17 @@ std::vector<calib::TUmbmarkEndpoint> runsFromPoses(const std::vector<calib::TPos
 	if (split.endpoints.empty()) throw std::runtime_error("no closed square found in the odometry");
 	if (!sideGiven) options.side_length_m = split.mean_side_length_m;
 	return split.endpoints;
+}
+
+/** --drive: drives the square (thesis 4.1), then reads the recording like -i. */
+std::vector<calib::TPosePair> driveAndRead(const std::string& driveIni, const std::string& outDir, std::string& source)
+{
+	const auto options = apps::loadDriveOptions(driveIni);
+	const auto rec = apps::driveUmbmark(driveIni, options, outDir);
+	std::cout << "drove " << options.runs_per_direction << " CW + " << options.runs_per_direction << " CCW squares of "
+			  << options.side_m << " m in " << rec.sim_time_s << " s (simulated); recording: " << rec.rawlog << "\n";
+	source = rec.rawlog;
+	return apps::readRawlogWithTruth(rec.rawlog, rec.truth);
 }
 
 int evaluateEndpointTable(const std::string& path, calib::TUmbmarkOptions options, const std::string& iniOut)
@@ -83,6 +98,13 @@ int main(int argc, char** argv)
 											  false, "", "TUM", cmd);
 		TCLAP::ValueArg<std::string> endpointsArg("", "endpoints", "End-point errors as CSV group,direction,x_cm,y_cm",
 												  false, "", "CSV", cmd);
+		TCLAP::ValueArg<std::string> driveArg(
+			"", "drive",
+			"Drive the UMBmark square (thesis 4.1) with the simulated P3-DX of this INI's [umbmark_drive] "
+			"(config_ini/umbmark-drive.ini), record it, evaluate the recording",
+			false, "", "DRIVE.ini", cmd);
+		TCLAP::ValueArg<std::string> driveOutArg("", "drive-out", "Folder for --drive's recording (created)", false,
+												 "hslam-umbmark-drive", "DIR", cmd);
 		TCLAP::ValueArg<std::string> sideArg("", "side-m", "Side of the square L (m); default: from the odometry",
 											 false, "", "L", cmd);
 		TCLAP::ValueArg<std::string> wheelbaseArg("", "wheelbase-m", "Nominal wheelbase b (m)", false, "0.335", "B",
@@ -97,8 +119,9 @@ int main(int argc, char** argv)
 		options.exact_model = !firstOrderArg.getValue();
 		options.nominal_wheelbase_m = positiveNumber(wheelbaseArg.getValue(), "--wheelbase-m");
 		if (sideArg.isSet()) options.side_length_m = positiveNumber(sideArg.getValue(), "--side-m");
-		const int inputs = folderArg.isSet() + rawlogArg.isSet() + endpointsArg.isSet();
-		if (inputs != 1) throw std::runtime_error("give exactly one input: FOLDER, -i RAWLOG or --endpoints CSV");
+		const int inputs = folderArg.isSet() + rawlogArg.isSet() + endpointsArg.isSet() + driveArg.isSet();
+		if (inputs != 1)
+			throw std::runtime_error("give exactly one input: FOLDER, -i RAWLOG, --endpoints CSV or --drive INI");
 		if (endpointsArg.isSet())
 		{
 			if (!sideArg.isSet()) throw std::runtime_error("--endpoints needs --side-m (thesis: 4.4)");
@@ -111,6 +134,8 @@ int main(int argc, char** argv)
 			source = folderArg.getValue();
 			poses = apps::readWaypointFolder(source);
 		}
+		else if (driveArg.isSet())
+			poses = driveAndRead(driveArg.getValue(), driveOutArg.getValue(), source);
 		else
 		{
 			source = rawlogArg.getValue();

@@ -7,6 +7,10 @@
 #include <hslam/testing/temp_dir.h>
 #include <hslam/testing/test_paths.h>
 #include <mrpt/config/CConfigFile.h>
+#include <mrpt/config/CConfigFileMemory.h>
+
+#include <filesystem>
+#include <sstream>
 
 #include <array>
 #include <cstdio>
@@ -89,4 +93,67 @@ TEST(UmbmarkApp, ThesisTablesAndBadInput)
 	EXPECT_EQ(bad.exitCode, 1);
 	EXPECT_NE(bad.out.find("bad.csv:3"), std::string::npos) << bad.out;
 	EXPECT_EQ(run(tmp.file("missing-folder")).exitCode, 1);
+}
+
+namespace
+{
+/** Drive INI + simulator INI (sim-umbmark.ini with the given errors and a
+ * small random slip) in `tmp`; returns the drive INI's path. */
+std::string writeDriveInis(const hslam::testing::CTempDir& tmp, double ed, double eb, int runs)
+{
+	std::ifstream in(std::string(HSLAM_SOURCE_DIR) + "/config_ini/sim-umbmark.ini");
+	std::stringstream ss;
+	ss << in.rdbuf();
+	mrpt::config::CConfigFileMemory sim(ss.str());
+	sim.write("world", "scene_file", std::string(HSLAM_SOURCE_DIR) + "/config_ini/sim-worlds/umbmark.scene");
+	sim.write("robot", "ed_wheel_diameter_ratio", std::to_string(ed));
+	sim.write("robot", "eb_wheelbase_ratio", std::to_string(eb));
+	// As UmbmarkSimulated.RecoversEdEbAndCorrectionReducesEmaxTenfold: a
+	// small random slip, so that 5 runs per direction pin Ed, Eb to 15 %.
+	sim.write("robot", "wheel_noise_m_per_sqrt_m", "0.0001");
+	sim.write("laser", "enabled", "false");
+	std::ofstream(tmp.file("sim.ini")) << sim.getContent();
+	std::ofstream(tmp.file("drive.ini")) << "[umbmark_drive]\nsim_ini = sim.ini\nside_m = 4.4\nruns_per_direction = "
+										 << runs << "\n";
+	return tmp.file("drive.ini");
+}
+}  // namespace
+
+// Thesis 4.1: the tool drives the 4.4 m square 5 times each way itself, records
+// it and recovers the simulated robot's Ed, Eb from that recording.
+TEST(UmbmarkApp, DriveRecoversKnownErrorsFromItsOwnRecording)
+{
+	hslam::testing::CTempDir tmp;
+	const double ed = 1.001, eb = 1.004;
+	const auto r = run("--drive " + writeDriveInis(tmp, ed, eb, 5) + " --drive-out " + tmp.file("rec") + " -o " +
+					   tmp.file("corr.ini"));
+	ASSERT_EQ(r.exitCode, 0) << r.out;
+	EXPECT_TRUE(std::filesystem::exists(tmp.file("rec/umbmark.rawlog")));
+	EXPECT_TRUE(std::filesystem::exists(tmp.file("rec/ground_truth.tum")));
+	EXPECT_NE(r.out.find("5 runs"), std::string::npos) << "five CW and five CCW runs\n" << r.out;
+	const double edFound = valueAfter(r.out, "Ed="), ebFound = valueAfter(r.out, "Eb=");
+	std::printf("--drive: Ed %.5f (true %.4f), Eb %.5f (true %.4f)\n", edFound, ed, ebFound, eb);
+	EXPECT_NEAR(edFound - 1.0, ed - 1.0, 0.15 * (ed - 1.0)) << r.out;
+	EXPECT_NEAR(ebFound - 1.0, eb - 1.0, 0.15 * (eb - 1.0)) << r.out;
+	EXPECT_TRUE(std::filesystem::exists(tmp.file("corr.ini")));
+	// The recording evaluates to the same numbers through -i.
+	const auto again = run("-i " + tmp.file("rec/umbmark.rawlog"));
+	ASSERT_EQ(again.exitCode, 0) << again.out;
+	EXPECT_DOUBLE_EQ(valueAfter(again.out, "Ed="), edFound);
+	EXPECT_DOUBLE_EQ(valueAfter(again.out, "Eb="), ebFound);
+}
+
+TEST(UmbmarkApp, DriveBadInputNamesTheFileAndKey)
+{
+	hslam::testing::CTempDir tmp;
+	std::ofstream(tmp.file("bad.ini")) << "[umbmark_drive]\nside_m = -3\n";
+	const auto bad = run("--drive " + tmp.file("bad.ini") + " --drive-out " + tmp.file("rec"));
+	EXPECT_EQ(bad.exitCode, 1);
+	EXPECT_NE(bad.out.find("bad.ini"), std::string::npos) << bad.out;
+	EXPECT_NE(bad.out.find("side_m"), std::string::npos) << bad.out;
+	std::ofstream(tmp.file("missing.ini")) << "[umbmark_drive]\nsim_ini = nowhere.ini\n";
+	const auto missing = run("--drive " + tmp.file("missing.ini") + " --drive-out " + tmp.file("rec2"));
+	EXPECT_EQ(missing.exitCode, 1);
+	EXPECT_NE(missing.out.find("nowhere.ini"), std::string::npos) << missing.out;
+	EXPECT_EQ(run("--drive " + tmp.file("bad.ini") + " -i x.rawlog").exitCode, 1) << "one input only";
 }
