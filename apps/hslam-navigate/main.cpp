@@ -82,6 +82,43 @@ double positive(const std::string& text, const std::string& what)
 	if (!v || *v <= 0) throw std::runtime_error(what + ": expected a positive number, got '" + text + "'");
 	return *v;
 }
+
+/** Creates `out` (refusing one that holds a previous run) and writes the
+ * controller options used into it. */
+void prepareOutputFolder(const std::string& out, const nav::TSubsumptionOptions& navOptions)
+{
+	if (std::filesystem::exists(std::filesystem::path(out) / "navigation.rawlog"))
+		throw std::runtime_error(out + ": holds a previous run (navigation.rawlog); choose another --out");
+	std::filesystem::create_directories(out);
+	mrpt::config::CConfigFileMemory used;
+	navOptions.save(used);
+	std::ofstream(std::filesystem::path(out) / "config_used.ini") << used.getContent();
+}
+
+struct TDriveOutcome
+{
+	bool ok = false;
+	size_t reached = 0;
+};
+
+TDriveOutcome driveSimulatedRun(const std::string& simIni, const nav::TSubsumptionOptions& navOptions,
+								const std::vector<mrpt::math::TPoint2D>& targets, double timeout_s,
+								apps::CNavigationLog& log, const std::string& out)
+{
+	const auto r = apps::driveSimulated(simIni, navOptions, targets, timeout_s, log, out);
+	std::cout << "simulated run: " << r.loop.time_s << " s, path " << r.loop.path_length_m << " m, min clearance "
+			  << r.loop.min_clearance_m << " m, " << (r.loop.collided ? "COLLISION" : "no collision") << ", CPU "
+			  << r.loop.cpuPerStep_us() << " us per control step\n";
+	return {r.loop.success(), r.targets_reached};
+}
+
+TDriveOutcome drivePioneerRun(const apps::TPioneerDriveOptions& p, const nav::TSubsumptionOptions& navOptions,
+							  const std::vector<mrpt::math::TPoint2D>& targets, apps::CNavigationLog& log)
+{
+	const auto r = apps::drivePioneer(p, navOptions, targets, log, g_stop);
+	std::cout << "robot run: " << r.time_s << " s\n";
+	return {r.finished, r.targets_reached};
+}
 }  // namespace
 
 int main(int argc, char** argv)
@@ -136,37 +173,19 @@ int main(int argc, char** argv)
 		const double timeout_s = positive(timeoutArg.getValue(), "--timeout-s");
 
 		const std::string out = outArg.getValue();
-		if (std::filesystem::exists(std::filesystem::path(out) / "navigation.rawlog"))
-			throw std::runtime_error(out + ": holds a previous run (navigation.rawlog); choose another --out");
-		std::filesystem::create_directories(out);
-		mrpt::config::CConfigFileMemory used;
-		navOptions.save(used);
-		std::ofstream(std::filesystem::path(out) / "config_used.ini") << used.getContent();
+		prepareOutputFolder(out, navOptions);
 
 		std::signal(SIGINT, onSignal);
 		std::signal(SIGTERM, onSignal);
 		apps::CNavigationLog log(out);
-		bool ok = false;
-		size_t reached = 0;
-		if (!simIni.empty())
-		{
-			const auto r = apps::driveSimulated(simIni, navOptions, targets, timeout_s, log, out);
-			ok = r.loop.success();
-			reached = r.targets_reached;
-			std::cout << "simulated run: " << r.loop.time_s << " s, path " << r.loop.path_length_m
-					  << " m, min clearance " << r.loop.min_clearance_m << " m, "
-					  << (r.loop.collided ? "COLLISION" : "no collision") << ", CPU " << r.loop.cpuPerStep_us()
-					  << " us per control step\n";
-		}
-		else
-		{
-			apps::TPioneerDriveOptions p{pioneerArg.getValue(), pioneerSectionArg.getValue(), laserSectionArg.getValue(),
-										 0.1, timeout_s};
-			const auto r = apps::drivePioneer(p, navOptions, targets, log, g_stop);
-			ok = r.finished;
-			reached = r.targets_reached;
-			std::cout << "robot run: " << r.time_s << " s\n";
-		}
+		const TDriveOutcome drive =
+			simIni.empty()
+				? drivePioneerRun({pioneerArg.getValue(), pioneerSectionArg.getValue(), laserSectionArg.getValue(), 0.1,
+								   timeout_s},
+								  navOptions, targets, log)
+				: driveSimulatedRun(simIni, navOptions, targets, timeout_s, log, out);
+		const bool ok = drive.ok;
+		const size_t reached = drive.reached;
 		log.finish();
 		if (simIni.empty())
 			log.renderPath(log.liveMap(), targets).saveToFile((std::filesystem::path(out) / "path.png").string());

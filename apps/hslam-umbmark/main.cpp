@@ -80,6 +80,12 @@ int evaluateEndpointTable(const std::string& path, calib::TUmbmarkOptions option
 	if (!iniOut.empty()) apps::writeCorrectionIni(iniOut, result, options, path);
 	return 0;
 }
+/** -i RAWLOG with --truth TUM (default: ground_truth.tum beside the rawlog). */
+std::vector<calib::TPosePair> readRawlogInput(const std::string& rawlog, const std::string& truth)
+{
+	return apps::readRawlogWithTruth(
+		rawlog, !truth.empty() ? truth : (std::filesystem::path(rawlog).parent_path() / "ground_truth.tum").string());
+}
 }  // namespace
 
 int main(int argc, char** argv)
@@ -127,23 +133,11 @@ int main(int argc, char** argv)
 			if (!sideArg.isSet()) throw std::runtime_error("--endpoints needs --side-m (thesis: 4.4)");
 			return evaluateEndpointTable(endpointsArg.getValue(), options, iniArg.getValue());
 		}
-		std::string source;
+		std::string source = folderArg.isSet() ? folderArg.getValue() : rawlogArg.getValue();
 		std::vector<calib::TPosePair> poses;
-		if (folderArg.isSet())
-		{
-			source = folderArg.getValue();
-			poses = apps::readWaypointFolder(source);
-		}
-		else if (driveArg.isSet())
-			poses = driveAndRead(driveArg.getValue(), driveOutArg.getValue(), source);
-		else
-		{
-			source = rawlogArg.getValue();
-			const std::string truth = truthArg.isSet()
-										  ? truthArg.getValue()
-										  : (std::filesystem::path(source).parent_path() / "ground_truth.tum").string();
-			poses = apps::readRawlogWithTruth(source, truth);
-		}
+		if (folderArg.isSet()) poses = apps::readWaypointFolder(source);
+		else if (driveArg.isSet()) poses = driveAndRead(driveArg.getValue(), driveOutArg.getValue(), source);
+		else poses = readRawlogInput(source, truthArg.getValue());
 		const auto runs = runsFromPoses(poses, options, sideArg.isSet());
 		const auto result = calib::computeUmbmark(runs, options);
 		apps::printUmbmark(std::cout, runs, result, options);
