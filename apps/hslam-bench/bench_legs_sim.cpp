@@ -52,50 +52,159 @@ struct TSimResult
 	double filter_s = 0;
 };
 
-TSimResult runSample(const fs::path& dir, const dynamic::CDynamicObjectFilter::TOptions& options,
-					 const std::string& pngPath)
+/** Per-scan ground truth of a simulated sample: the beams on people's legs
+ * (beam_labels.csv.gz) and the people's positions (people.csv.gz). */
+struct TSimLabels
 {
-	const std::string rawlog = (dir / "sim.rawlog").string();
-	std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> scans;
-	for (const auto& s : readScans(rawlog))
-		if (s->sensorLabel == "LASER") scans.push_back(s);
-	const auto truth = common::readTumFile((dir / "ground_truth.tum").string());
-	if (truth.size() != scans.size())
-		throw std::runtime_error((dir / "ground_truth.tum").string() + ": " + std::to_string(truth.size()) +
-								 " poses for " + std::to_string(scans.size()) + " laser scans");
+	std::vector<std::set<size_t>> person_beams;  //!< per scan: beams on a person's leg
+	std::vector<std::map<int, size_t>> beams_of_person;  //!< per scan: person id -> beams on it
+	std::vector<std::vector<std::pair<int, mrpt::math::TPoint2D>>> people;  //!< per scan: (id, position)
+	std::set<int> person_ids;
+};
 
+TSimLabels readSimLabels(const fs::path& dir, size_t scanCount)
+{
 	const std::string labelsFile = (dir / "beam_labels.csv.gz").string(), peopleFile = (dir / "people.csv.gz").string();
-	std::vector<std::set<size_t>> personBeams(scans.size());
-	std::vector<std::map<int, size_t>> beamsOfPerson(scans.size());  // visible people per scan
+	TSimLabels l;
+	l.person_beams.resize(scanCount), l.beams_of_person.resize(scanCount), l.people.resize(scanCount);
 	for (const auto& row : readCsv(labelsFile))
 		if (row.at("kind") == "person_leg")
 		{
 			const size_t scan = static_cast<size_t>(number(row, "scan", labelsFile));
-			if (scan >= scans.size()) continue;
-			personBeams[scan].insert(static_cast<size_t>(number(row, "beam", labelsFile)));
-			beamsOfPerson[scan][static_cast<int>(number(row, "object", labelsFile))]++;
+			if (scan >= scanCount) continue;
+			l.person_beams[scan].insert(static_cast<size_t>(number(row, "beam", labelsFile)));
+			l.beams_of_person[scan][static_cast<int>(number(row, "object", labelsFile))]++;
 		}
-	std::vector<std::vector<std::pair<int, mrpt::math::TPoint2D>>> people(scans.size());
-	std::set<int> personIds;
 	for (const auto& row : readCsv(peopleFile))
 	{
 		const size_t scan = static_cast<size_t>(number(row, "scan", peopleFile));
 		const int id = static_cast<int>(number(row, "person", peopleFile));
-		personIds.insert(id);
-		if (scan < scans.size())
-			people[scan].push_back({id, {number(row, "x_m", peopleFile), number(row, "y_m", peopleFile)}});
+		l.person_ids.insert(id);
+		if (scan < scanCount)
+			l.people[scan].push_back({id, {number(row, "x_m", peopleFile), number(row, "y_m", peopleFile)}});
+	}
+	return l;
+}
+
+/** The cells hit by person beams and by static beams (for the people-cells figure). */
+struct THitCells
+{
+	std::set<std::pair<int, int>> person, statics;
+};
+
+/** Beam-level scores of one scan (TP / FP / FN against the labels) and the
+ * cells its beams hit, split by the truth. */
+void scoreBeams(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& pose,
+				const std::set<size_t>& personBeams, const dynamic::TDynamicFrame& frame, double maxRange_m,
+				const maps::CTiledOccupancyGrid& grid, TSimResult& r, THitCells& cells)
+{
+	const mrpt::poses::CPose2D sensor = pose + mrpt::poses::CPose2D(scan.sensorPose);
+	for (size_t b = 0; b < scan.getScanSize(); ++b)
+	{
+		const bool truthDyn = personBeams.count(b) > 0, flagged = frame.beam_is_dynamic[b];
+		r.tp += truthDyn && flagged;
+		r.fp += !truthDyn && flagged;
+		r.fn += truthDyn && !flagged;
+		const double range = scan.getScanRange(b);
+		if (!scan.getScanRangeValidity(b) || range > maxRange_m) continue;
+		const double a = dynamic::beamBearing(scan, b) - scan.sensorPose.yaw();
+		double x, y;
+		sensor.composePoint(range * std::cos(a), range * std::sin(a), x, y);
+		const auto c = grid.geometry().cellOf(x, y);
+		(truthDyn ? cells.person : cells.statics).insert({c.gx, c.gy});
+	}
+}
+
+/** Track identity against the true people over the scans. */
+class CIdentityScore
+{
+   public:
+	/** The dynamic person track nearest each true person seen by at least 3
+	 * beams within the detector's range. */
+	void scan(const TSimLabels& labels, size_t i, const mrpt::poses::CPose2D& pose, double t_s,
+			  const dynamic::CDynamicObjectFilter& filter, TSimResult& r)
+	{
+		for (const auto& [id, p] : labels.people[i])
+		{
+			const auto seen = labels.beams_of_person[i].find(id);
+			if (seen == labels.beams_of_person[i].end() || seen->second < 3 ||
+				pose.distanceTo(mrpt::poses::CPose2D(p.x, p.y, 0)) > filter.options().detector.max_range_m)
+				continue;
+			++r.person_frames;
+			const int best = nearestDynamicTrack(filter.lastFrame(), p);
+			if (best < 0) continue;
+			++r.covered_frames;
+			const auto last = m_lastTrackOf.find(id);
+			if (last != m_lastTrackOf.end() && last->second != best)
+			{
+				++r.id_switches;
+				// Within the tracker's memory: a switch re-identification should have avoided.
+				r.id_switches_short += t_s - m_lastMatch_s[id] <= filter.options().tracker.memory_s;
+			}
+			m_lastTrackOf[id] = best;
+			m_lastMatch_s[id] = t_s;
+		}
 	}
 
+   private:
+	static int nearestDynamicTrack(const dynamic::TDynamicFrame& frame, const mrpt::math::TPoint2D& p)
+	{
+		int best = -1;
+		double bestD = 0.5;
+		for (const auto& t : frame.person_tracks)
+		{
+			const double d = std::hypot(t.x[0] - p.x, t.x[1] - p.y);
+			if (t.state == dynamic::ETrackState::dynamic && d < bestD) bestD = d, best = t.id;
+		}
+		return best;
+	}
+	std::map<int, int> m_lastTrackOf;  //!< true person -> last matched track id
+	std::map<int, double> m_lastMatch_s;  //!< true person -> time of that match
+};
+
+/** Occupied cells only people ever hit (not within one cell of a static hit). */
+size_t peopleOnlyOccupiedCells(const maps::CTiledOccupancyGrid& g, const THitCells& cells)
+{
+	size_t n = 0;
+	for (const auto& c : dynamic::occupiedCells(g))
+	{
+		if (!cells.person.count({c.gx, c.gy})) continue;
+		bool nearStatic = false;
+		for (int dy = -1; dy <= 1; ++dy)
+			for (int dx = -1; dx <= 1; ++dx) nearStatic |= cells.statics.count({c.gx + dx, c.gy + dy}) > 0;
+		n += !nearStatic;
+	}
+	return n;
+}
+
+/** The laser scans of a sample with their true poses (checked to pair up). */
+std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> readSampleScans(const fs::path& dir, common::TTrajectory2D& truth)
+{
+	std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> scans;
+	for (const auto& s : readScans((dir / "sim.rawlog").string()))
+		if (s->sensorLabel == "LASER") scans.push_back(s);
+	truth = common::readTumFile((dir / "ground_truth.tum").string());
+	if (truth.size() != scans.size())
+		throw std::runtime_error((dir / "ground_truth.tum").string() + ": " + std::to_string(truth.size()) +
+								 " poses for " + std::to_string(scans.size()) + " laser scans");
+	return scans;
+}
+
+TSimResult runSample(const fs::path& dir, const dynamic::CDynamicObjectFilter::TOptions& options,
+					 const std::string& pngPath)
+{
+	common::TTrajectory2D truth;
+	const auto scans = readSampleScans(dir, truth);
+	const TSimLabels labels = readSimLabels(dir, scans.size());
 	TSimResult r;
-	r.people = personIds.size();
+	r.people = labels.person_ids.size();
 	maps::CLaserGridInserter inserter;
 	maps::CTiledOccupancyGrid without, with;
 	slam::CDynamicMappingStage stage(inserter, std::make_unique<dynamic::CDynamicObjectFilter>(options));
 	stage.addGrid(with);
 	const dynamic::CDynamicObjectFilter& filter = *stage.filter();
-	std::set<std::pair<int, int>> personCells, staticCells;
-	std::map<int, int> lastTrackOf;  // true person -> last matched track id
-	std::map<int, double> lastMatch_s;  // true person -> time of that match
+	THitCells cells;
+	CIdentityScore identity;
 	for (size_t i = 0; i < scans.size(); ++i)
 	{
 		const auto& scan = *scans[i];
@@ -103,72 +212,15 @@ TSimResult runSample(const fs::path& dir, const dynamic::CDynamicObjectFilter::T
 		const auto t0 = std::chrono::steady_clock::now();
 		const auto& update = stage.filterScan(scan, pose, mrpt::Clock::toDouble(scan.timestamp));
 		r.filter_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-		const dynamic::TDynamicFrame& frame = filter.lastFrame();
 		++r.scans;
 		inserter.insert(without, pose, scan);
 		stage.insertScan(0, scan, pose, update);  // late exclusions, then the scan with its mask
-
-		const mrpt::poses::CPose2D sensor = pose + mrpt::poses::CPose2D(scan.sensorPose);
-		for (size_t b = 0; b < scan.getScanSize(); ++b)
-		{
-			const bool truthDyn = personBeams[i].count(b) > 0, flagged = frame.beam_is_dynamic[b];
-			r.tp += truthDyn && flagged;
-			r.fp += !truthDyn && flagged;
-			r.fn += truthDyn && !flagged;
-			const double range = scan.getScanRange(b);
-			if (!scan.getScanRangeValidity(b) || range > inserter.options().max_range_m) continue;
-			const double a = dynamic::beamBearing(scan, b) - scan.sensorPose.yaw();
-			double x, y;
-			sensor.composePoint(range * std::cos(a), range * std::sin(a), x, y);
-			const auto c = without.geometry().cellOf(x, y);
-			(truthDyn ? personCells : staticCells).insert({c.gx, c.gy});
-		}
-		// Identity: the dynamic person track nearest each true person seen by
-		// at least 3 beams within the detector's range.
-		for (const auto& [id, p] : people[i])
-		{
-			const auto seen = beamsOfPerson[i].find(id);
-			if (seen == beamsOfPerson[i].end() || seen->second < 3 ||
-				pose.distanceTo(mrpt::poses::CPose2D(p.x, p.y, 0)) > filter.options().detector.max_range_m)
-				continue;
-			++r.person_frames;
-			int best = -1;
-			double bestD = 0.5;
-			for (const auto& t : frame.person_tracks)
-			{
-				const double d = std::hypot(t.x[0] - p.x, t.x[1] - p.y);
-				if (t.state == dynamic::ETrackState::dynamic && d < bestD) bestD = d, best = t.id;
-			}
-			if (best < 0) continue;
-			++r.covered_frames;
-			const auto last = lastTrackOf.find(id);
-			const double t = mrpt::Clock::toDouble(scan.timestamp);
-			if (last != lastTrackOf.end() && last->second != best)
-			{
-				++r.id_switches;
-				// Within the tracker's memory: a switch re-identification should have avoided.
-				r.id_switches_short += t - lastMatch_s[id] <= filter.options().tracker.memory_s;
-			}
-			lastTrackOf[id] = best;
-			lastMatch_s[id] = t;
-		}
+		scoreBeams(scan, pose, labels.person_beams[i], filter.lastFrame(), inserter.options().max_range_m, without, r,
+				   cells);
+		identity.scan(labels, i, pose, mrpt::Clock::toDouble(scan.timestamp), filter, r);
 	}
-	// Cells only people ever hit (not within one cell of a static hit) that end occupied.
-	const auto onlyPeople = [&](const maps::CTiledOccupancyGrid& g) {
-		size_t n = 0;
-		for (const auto& c : dynamic::occupiedCells(g))
-		{
-			if (!personCells.count({c.gx, c.gy})) continue;
-			bool nearStatic = false;
-			for (int dy = -1; dy <= 1; ++dy)
-				for (int dx = -1; dx <= 1; ++dx) nearStatic |= staticCells.count({c.gx + dx, c.gy + dy}) > 0;
-			n += !nearStatic;
-		}
-		return n;
-	};
-	r.people_cells_without = onlyPeople(without);
-	r.people_cells_with = onlyPeople(with);
-
+	r.people_cells_without = peopleOnlyOccupiedCells(without, cells);
+	r.people_cells_with = peopleOnlyOccupiedCells(with, cells);
 	if (!pngPath.empty()) saveExclusionComparison(without, with, 2, pngPath);
 	return r;
 }

@@ -121,6 +121,58 @@ TDriveOutcome drivePioneerRun(const apps::TPioneerDriveOptions& p, const nav::TS
 }
 }  // namespace
 
+/** The command line (TCLAP arguments registered on `cmd`). */
+struct TNavigateArgs
+{
+	explicit TNavigateArgs(TCLAP::CmdLine& c) : cmd(c) {}
+	TCLAP::CmdLine& cmd;
+	TCLAP::ValueArg<std::string> simArg{"", "sim", "Simulator INI (world, robot, sensors)", false, "", "SIM.ini", cmd};
+	TCLAP::ValueArg<int> trialArg{"", "thesis-trial", "Thesis 4.2.2 trial 1, 2 or 3 (figures 66-68) in the lab world",
+								  false, 0, "N", cmd};
+	TCLAP::ValueArg<std::string> pioneerArg{"", "pioneer", "Grabber INI with the Pioneer (real robot or emulator)",
+											false, "", "GRABBER.ini", cmd};
+	TCLAP::ValueArg<std::string> pioneerSectionArg{"", "pioneer-section", "Its Pioneer section", false, "PIONEER",
+												   "NAME", cmd};
+	TCLAP::ValueArg<std::string> laserSectionArg{"", "laser-section", "Its laser section (empty: sonar only)", false,
+												 "", "NAME", cmd};
+	TCLAP::ValueArg<std::string> targetsArg{"", "targets", "Targets 'x y; x y; ...' (m, world frame)", false, "",
+											"LIST", cmd};
+	TCLAP::ValueArg<std::string> targetsFileArg{"", "targets-file", "Targets, one 'x y' per line", false, "", "FILE",
+												cmd};
+	TCLAP::ValueArg<std::string> startPoseArg{
+		"", "start-pose",
+		"With --pioneer: the robot's world pose 'x_m y_m yaw_deg' at its odometry origin; targets are then world "
+		"coordinates (default: targets in the odometry frame)",
+		false, "", "POSE", cmd};
+	TCLAP::ValueArg<std::string> navArg{"c", "nav-config", "Controller INI (config_ini/nav-subsumption.ini)", false,
+										"", "NAV.ini", cmd};
+	TCLAP::ValueArg<std::string> outArg{"o", "out", "Output folder (created; must not hold a previous run)", false,
+										"hslam-navigate-out", "DIR", cmd};
+	TCLAP::ValueArg<std::string> timeoutArg{"", "timeout-s", "Give up after this time (s)", false, "300", "S", cmd};
+};
+
+/** The targets given on the command line; sets `simIni` (the thesis trials
+ * drive in the lab world unless --sim says otherwise). */
+std::vector<mrpt::math::TPoint2D> targetsOf(TNavigateArgs& args, std::string& simIni)
+{
+	std::vector<mrpt::math::TPoint2D> targets;
+	simIni = args.simArg.getValue();
+	if (args.trialArg.isSet())
+	{
+		const auto trials = sim::thesisTrials("config_ini/sim-worlds");
+		if (args.trialArg.getValue() < 1 || args.trialArg.getValue() > 3) throw std::runtime_error("--thesis-trial: 1, 2 or 3");
+		targets = trials[args.trialArg.getValue() - 1].targets;
+		if (simIni.empty()) simIni = "config_ini/sim-nav-lab.ini";
+	}
+	if (args.targetsArg.isSet()) targets = nav::parseTargetList(args.targetsArg.getValue(), "--targets");
+	if (args.targetsFileArg.isSet()) targets = readTargetsFile(args.targetsFileArg.getValue());
+	if (targets.empty()) throw std::runtime_error("no target: give --targets, --targets-file or --thesis-trial");
+	if (simIni.empty() == args.pioneerArg.getValue().empty())
+		throw std::runtime_error("choose one robot: --sim INI (or --thesis-trial) or --pioneer INI");
+	if (args.startPoseArg.isSet()) targets = targetsInOdometryFrame(targets, args.startPoseArg.getValue(), args.pioneerArg.getValue());
+	return targets;
+}
+
 int main(int argc, char** argv)
 {
 	try
@@ -128,51 +180,16 @@ int main(int argc, char** argv)
 		TCLAP::CmdLine cmd("Drives the P3-DX (simulated or real) to targets with the subsumption controller of "
 						   "thesis 4.2, recording a rawlog, the live map, the path (CSV, PNG).",
 						   ' ', hslam::common::versionText());
-		TCLAP::ValueArg<std::string> simArg("", "sim", "Simulator INI (world, robot, sensors)", false, "", "SIM.ini", cmd);
-		TCLAP::ValueArg<int> trialArg("", "thesis-trial", "Thesis 4.2.2 trial 1, 2 or 3 (figures 66-68) in the lab world",
-									  false, 0, "N", cmd);
-		TCLAP::ValueArg<std::string> pioneerArg("", "pioneer", "Grabber INI with the Pioneer (real robot or emulator)",
-												false, "", "GRABBER.ini", cmd);
-		TCLAP::ValueArg<std::string> pioneerSectionArg("", "pioneer-section", "Its Pioneer section", false, "PIONEER",
-													   "NAME", cmd);
-		TCLAP::ValueArg<std::string> laserSectionArg("", "laser-section", "Its laser section (empty: sonar only)", false,
-													 "", "NAME", cmd);
-		TCLAP::ValueArg<std::string> targetsArg("", "targets", "Targets 'x y; x y; ...' (m, world frame)", false, "",
-												"LIST", cmd);
-		TCLAP::ValueArg<std::string> targetsFileArg("", "targets-file", "Targets, one 'x y' per line", false, "", "FILE",
-													cmd);
-		TCLAP::ValueArg<std::string> startPoseArg(
-			"", "start-pose",
-			"With --pioneer: the robot's world pose 'x_m y_m yaw_deg' at its odometry origin; targets are then world "
-			"coordinates (default: targets in the odometry frame)",
-			false, "", "POSE", cmd);
-		TCLAP::ValueArg<std::string> navArg("c", "nav-config", "Controller INI (config_ini/nav-subsumption.ini)", false,
-											"", "NAV.ini", cmd);
-		TCLAP::ValueArg<std::string> outArg("o", "out", "Output folder (created; must not hold a previous run)", false,
-											"hslam-navigate-out", "DIR", cmd);
-		TCLAP::ValueArg<std::string> timeoutArg("", "timeout-s", "Give up after this time (s)", false, "300", "S", cmd);
+		TNavigateArgs args(cmd);
 		if (!cmd.parse(argc, argv)) return common::exitCodeAfterParseStop(argc, argv);
 
 		nav::TSubsumptionOptions navOptions;
-		if (navArg.isSet()) navOptions = nav::TSubsumptionOptions::load(mrpt::config::CConfigFile(navArg.getValue()));
-		std::vector<mrpt::math::TPoint2D> targets;
-		std::string simIni = simArg.getValue();
-		if (trialArg.isSet())
-		{
-			const auto trials = sim::thesisTrials("config_ini/sim-worlds");
-			if (trialArg.getValue() < 1 || trialArg.getValue() > 3) throw std::runtime_error("--thesis-trial: 1, 2 or 3");
-			targets = trials[trialArg.getValue() - 1].targets;
-			if (simIni.empty()) simIni = "config_ini/sim-nav-lab.ini";
-		}
-		if (targetsArg.isSet()) targets = nav::parseTargetList(targetsArg.getValue(), "--targets");
-		if (targetsFileArg.isSet()) targets = readTargetsFile(targetsFileArg.getValue());
-		if (targets.empty()) throw std::runtime_error("no target: give --targets, --targets-file or --thesis-trial");
-		if (simIni.empty() == pioneerArg.getValue().empty())
-			throw std::runtime_error("choose one robot: --sim INI (or --thesis-trial) or --pioneer INI");
-		if (startPoseArg.isSet()) targets = targetsInOdometryFrame(targets, startPoseArg.getValue(), pioneerArg.getValue());
-		const double timeout_s = positive(timeoutArg.getValue(), "--timeout-s");
+		if (args.navArg.isSet()) navOptions = nav::TSubsumptionOptions::load(mrpt::config::CConfigFile(args.navArg.getValue()));
+		std::string simIni;
+		const auto targets = targetsOf(args, simIni);
+		const double timeout_s = positive(args.timeoutArg.getValue(), "--timeout-s");
 
-		const std::string out = outArg.getValue();
+		const std::string out = args.outArg.getValue();
 		prepareOutputFolder(out, navOptions);
 
 		std::signal(SIGINT, onSignal);
@@ -180,7 +197,7 @@ int main(int argc, char** argv)
 		apps::CNavigationLog log(out);
 		const TDriveOutcome drive =
 			simIni.empty()
-				? drivePioneerRun({pioneerArg.getValue(), pioneerSectionArg.getValue(), laserSectionArg.getValue(), 0.1,
+				? drivePioneerRun({args.pioneerArg.getValue(), args.pioneerSectionArg.getValue(), args.laserSectionArg.getValue(), 0.1,
 								   timeout_s},
 								  navOptions, targets, log)
 				: driveSimulatedRun(simIni, navOptions, targets, timeout_s, log, out);
