@@ -263,6 +263,55 @@ TTrailResult printTrail(const std::string& title, const dynamic::CDynamicObjectF
 			  << "\n";
 	return trail;
 }
+/** Robot poses of the parts without people (no odometry, no tf): ICP per sensor. */
+std::map<size_t, std::vector<mrpt::poses::CPose2D>> negativePartPoses(const std::vector<dynamic::TLegDataPart>& parts)
+{
+	std::map<size_t, std::vector<mrpt::poses::CPose2D>> negativePoses;
+	std::cout << "\nRobot motion of the parts without people (no odometry, no tf): ICP per sensor\n";
+	for (size_t i = 0; i < parts.size(); ++i)
+		if (!parts[i].has_people)
+		{
+			negativePoses[i] = matching::icpOdometry(parts[i].scans);
+			double path_m = 0;
+			for (size_t k = 1; k < negativePoses[i].size(); ++k)
+				path_m += negativePoses[i][k].distanceTo(negativePoses[i][k - 1]);
+			std::cout << "  " << std::left << std::setw(24) << parts[i].name << std::right << std::fixed
+					  << std::setprecision(1) << path_m << " m\n";
+		}
+	return negativePoses;
+}
+
+/** The suite's key=value lines. */
+void printLegsKeys(const TMethodResult& rules, const TMethodResult& learned, const TTrailResult& rulesTrail,
+				   const TTrailResult& trail)
+{
+	const double reduction = trail.trail_without ? 1.0 - ratio(trail.trail_with, trail.trail_without) : 0.0;
+	// Final keys: the filter with the learned classifier, cross-validated, at
+	// the level the batch map uses (a leg is a person's if its track is
+	// confirmed dynamic at any time: late exclusion); the causal level (as
+	// known at the scan) and the rules for comparison.
+	const double filter_s = learned.filter_s + trail.filter_s;
+	const size_t filterScans = learned.filter_scans + trail.scans;
+	std::cout << std::setprecision(4) << "\nlegs_negative_scans=" << learned.detected.negative_scans
+			  << "\nlegs_annotated=" << learned.detected.annotated
+			  << "\nlegs_rules_detected_recall=" << rules.detected.recall()
+			  << "\nlegs_rules_detected_false_per_scan=" << rules.detected.falsePerScan()
+			  << "\nlegs_rules_dynamic_recall=" << rules.dynamic.recall()
+			  << "\nlegs_rules_dynamic_false_per_scan=" << rules.dynamic.falsePerScan()
+			  << "\nlegs_detected_recall=" << learned.detected.recall()
+			  << "\nlegs_detected_false_per_scan=" << learned.detected.falsePerScan()
+			  << "\nlegs_causal_recall=" << learned.dynamic.recall()
+			  << "\nlegs_causal_false_per_scan=" << learned.dynamic.falsePerScan()
+			  << "\nghost_cells_rules_without=" << rulesTrail.trail_without
+			  << "\nghost_cells_rules_with=" << rulesTrail.trail_with << "\nghost_cells_without=" << trail.trail_without
+			  << "\nghost_cells_with=" << trail.trail_with
+			  << "\nfilter_us_per_scan=" << 1e6 * filter_s / std::max<size_t>(1, filterScans)
+			  << "\nfilter_rules_us_per_scan_labelled=" << 1e6 * rules.filter_s / std::max<size_t>(1, rules.filter_scans)
+			  << "\nfilter_learned_us_per_scan_labelled=" << 1e6 * learned.filter_s / std::max<size_t>(1, learned.filter_scans)
+			  << "\nfilter_learned_vs_rules_time_ratio=" << learned.filter_s / std::max(1e-12, rules.filter_s)
+			  << "\nlegs_recall=" << learned.late.recall() << "\nlegs_false_per_scan=" << learned.late.falsePerScan()
+			  << "\nghost_cells_reduction=" << reduction << "\n";
+}
 }  // namespace
 
 int runLegsSuite(const std::string& dataDir, const std::string& outDir, const std::string& configFile)
@@ -276,18 +325,7 @@ int runLegsSuite(const std::string& dataDir, const std::string& outDir, const st
 	if (!configFile.empty()) std::cout << "then the [dynamic_objects] keys of " << configFile << "\n";
 
 	const auto parts = dynamic::loadLegDataset(dataDir);
-	std::map<size_t, std::vector<mrpt::poses::CPose2D>> negativePoses;
-	std::cout << "\nRobot motion of the parts without people (no odometry, no tf): ICP per sensor\n";
-	for (size_t i = 0; i < parts.size(); ++i)
-		if (!parts[i].has_people)
-		{
-			negativePoses[i] = matching::icpOdometry(parts[i].scans);
-			double path_m = 0;
-			for (size_t k = 1; k < negativePoses[i].size(); ++k)
-				path_m += negativePoses[i][k].distanceTo(negativePoses[i][k - 1]);
-			std::cout << "  " << std::left << std::setw(24) << parts[i].name << std::right << std::fixed
-					  << std::setprecision(1) << path_m << " m\n";
-		}
+	const auto negativePoses = negativePartPoses(parts);
 
 	// 1. The rule set (thesis 4.7.1 with the Hokuyo profile).
 	const auto rules = evaluateMethod("Thesis rules (CLegDetector rules, Hokuyo profile)", rulesOptions, parts,
@@ -316,33 +354,8 @@ int runLegsSuite(const std::string& dataDir, const std::string& outDir, const st
 	const std::string demo = dataDir + "/demo_stationary_simple_environment.rawlog";
 	const auto rulesTrail = printTrail("thesis rules", rulesOptions, nullptr, demo, outDir + "/legs_demo_maps_rules.png");
 	const auto trail = printTrail("learned", learnedOptions, fullModel, demo, outDir + "/legs_demo_maps.png");
-	const double reduction = trail.trail_without ? 1.0 - ratio(trail.trail_with, trail.trail_without) : 0.0;
 
-	// Final keys: the filter with the learned classifier, cross-validated, at
-	// the level the batch map uses (a leg is a person's if its track is
-	// confirmed dynamic at any time: late exclusion); the causal level (as
-	// known at the scan) and the rules for comparison.
-	const double filter_s = learned.filter_s + trail.filter_s;
-	const size_t filterScans = learned.filter_scans + trail.scans;
-	std::cout << std::setprecision(4) << "\nlegs_negative_scans=" << learned.detected.negative_scans
-			  << "\nlegs_annotated=" << learned.detected.annotated
-			  << "\nlegs_rules_detected_recall=" << rules.detected.recall()
-			  << "\nlegs_rules_detected_false_per_scan=" << rules.detected.falsePerScan()
-			  << "\nlegs_rules_dynamic_recall=" << rules.dynamic.recall()
-			  << "\nlegs_rules_dynamic_false_per_scan=" << rules.dynamic.falsePerScan()
-			  << "\nlegs_detected_recall=" << learned.detected.recall()
-			  << "\nlegs_detected_false_per_scan=" << learned.detected.falsePerScan()
-			  << "\nlegs_causal_recall=" << learned.dynamic.recall()
-			  << "\nlegs_causal_false_per_scan=" << learned.dynamic.falsePerScan()
-			  << "\nghost_cells_rules_without=" << rulesTrail.trail_without
-			  << "\nghost_cells_rules_with=" << rulesTrail.trail_with << "\nghost_cells_without=" << trail.trail_without
-			  << "\nghost_cells_with=" << trail.trail_with
-			  << "\nfilter_us_per_scan=" << 1e6 * filter_s / std::max<size_t>(1, filterScans)
-			  << "\nfilter_rules_us_per_scan_labelled=" << 1e6 * rules.filter_s / std::max<size_t>(1, rules.filter_scans)
-			  << "\nfilter_learned_us_per_scan_labelled=" << 1e6 * learned.filter_s / std::max<size_t>(1, learned.filter_scans)
-			  << "\nfilter_learned_vs_rules_time_ratio=" << learned.filter_s / std::max(1e-12, rules.filter_s)
-			  << "\nlegs_recall=" << learned.late.recall() << "\nlegs_false_per_scan=" << learned.late.falsePerScan()
-			  << "\nghost_cells_reduction=" << reduction << "\n";
+	printLegsKeys(rules, learned, rulesTrail, trail);
 	return 0;
 }
 

@@ -80,6 +80,16 @@ int evaluateEndpointTable(const std::string& path, calib::TUmbmarkOptions option
 	if (!iniOut.empty()) apps::writeCorrectionIni(iniOut, result, options, path);
 	return 0;
 }
+/** The computation's options from the command line (side "" = from the odometry). */
+calib::TUmbmarkOptions umbmarkOptions(bool exactModel, const std::string& wheelbase, const std::string& side)
+{
+	calib::TUmbmarkOptions options;
+	options.exact_model = exactModel;
+	options.nominal_wheelbase_m = positiveNumber(wheelbase, "--wheelbase-m");
+	if (!side.empty()) options.side_length_m = positiveNumber(side, "--side-m");
+	return options;
+}
+
 /** -i RAWLOG with --truth TUM (default: ground_truth.tum beside the rawlog). */
 std::vector<calib::TPosePair> readRawlogInput(const std::string& rawlog, const std::string& truth)
 {
@@ -121,10 +131,8 @@ int main(int argc, char** argv)
 											false, "", "OUT.ini", cmd);
 		if (!cmd.parse(argc, argv)) return common::exitCodeAfterParseStop(argc, argv);
 
-		calib::TUmbmarkOptions options;
-		options.exact_model = !firstOrderArg.getValue();
-		options.nominal_wheelbase_m = positiveNumber(wheelbaseArg.getValue(), "--wheelbase-m");
-		if (sideArg.isSet()) options.side_length_m = positiveNumber(sideArg.getValue(), "--side-m");
+		auto options = umbmarkOptions(!firstOrderArg.getValue(), wheelbaseArg.getValue(),
+											sideArg.isSet() ? sideArg.getValue() : "");
 		const int inputs = folderArg.isSet() + rawlogArg.isSet() + endpointsArg.isSet() + driveArg.isSet();
 		if (inputs != 1)
 			throw std::runtime_error("give exactly one input: FOLDER, -i RAWLOG, --endpoints CSV or --drive INI");

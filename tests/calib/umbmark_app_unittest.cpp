@@ -28,13 +28,8 @@ struct TRun
 
 TRun run(const std::string& args)
 {
-	const std::string cmd = std::string(HSLAM_BIN_DIR) + "/hslam-umbmark " + args + " 2>&1";
-	TRun r;
-	std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.c_str(), "r"), pclose);
-	std::array<char, 4096> buf{};
-	while (fgets(buf.data(), buf.size(), pipe.get())) r.out += buf.data();
-	r.exitCode = WEXITSTATUS(pclose(pipe.release()));
-	return r;
+	const auto r = hslam::testing::runCapturingOutput(std::string(HSLAM_BIN_DIR) + "/hslam-umbmark " + args);
+	return {r.exitCode, r.out};
 }
 
 double valueAfter(const std::string& text, const std::string& key)

@@ -16,13 +16,7 @@ using hslam::testing::runCommand;
 
 namespace
 {
-std::string readText(const std::string& path)
-{
-	std::ifstream in(path);
-	std::stringstream text;
-	text << in.rdbuf();
-	return text.str();
-}
+std::string readText(const std::string& path) { return hslam::testing::readTextFile(path); }
 
 /** Runs the app with `args`, stdout/stderr into files in `dir`. */
 int runEvaluate(const CTempDir& dir, const std::string& args)

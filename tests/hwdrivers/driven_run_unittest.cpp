@@ -42,14 +42,9 @@ struct TRun
 
 TRun runScript(const std::string& outDir)
 {
-	const std::string cmd = "HSLAM_BIN=" + std::string(HSLAM_BIN_DIR) + " " + kSrc + "/scripts/driven-run.sh " +
-							outDir + " --short 2>&1";
-	TRun r;
-	std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.c_str(), "r"), pclose);
-	std::array<char, 4096> buf{};
-	while (fgets(buf.data(), buf.size(), pipe.get())) r.out += buf.data();
-	r.exitCode = WEXITSTATUS(pclose(pipe.release()));
-	return r;
+	const auto r = hslam::testing::runCapturingOutput("HSLAM_BIN=" + std::string(HSLAM_BIN_DIR) + " " + kSrc +
+													  "/scripts/driven-run.sh " + outDir + " --short");
+	return {r.exitCode, r.out};
 }
 
 mrpt::maps::COccupancyGridMap2D loadGridmap(const std::string& path)

@@ -70,13 +70,8 @@ std::optional<mrpt::poses::CPose2D> incrementAt(const mrpt::obs::CRawlog& rawlog
 /** Runs a command, returns its exit status and standard output. */
 std::pair<int, std::string> run(const std::string& command)
 {
-	std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen((command + " 2>&1").c_str(), "r"), pclose);
-	if (!pipe) return {-1, ""};
-	std::string out;
-	std::array<char, 4096> buffer{};
-	while (fgets(buffer.data(), buffer.size(), pipe.get())) out += buffer.data();
-	const int status = pclose(pipe.release());
-	return {WEXITSTATUS(status), out};
+	const auto r = hslam::testing::runCapturingOutput(command);
+	return {r.exitCode, r.out};
 }
 }  // namespace
 

@@ -18,13 +18,7 @@ namespace
 const std::string kSource = HSLAM_SOURCE_DIR;
 const std::string kBin = HSLAM_BIN_DIR;
 
-std::string readText(const std::string& path)
-{
-	std::ifstream in(path);
-	std::stringstream text;
-	text << in.rdbuf();
-	return text.str();
-}
+std::string readText(const std::string& path) { return hslam::testing::readTextFile(path); }
 
 void writeFile(const std::string& path, const std::string& bytes)
 {

@@ -117,35 +117,11 @@ void CDynamicObjectFilter::pairLegs(const std::vector<mrpt::math::TPoint2D>& leg
 		}
 }
 
-const TDynamicFrame& CDynamicObjectFilter::process(const mrpt::obs::CObservation2DRangeScan& scan,
-												   const mrpt::poses::CPose2D& robotPose, double t_s)
+void CDynamicObjectFilter::updatePersonTracks(const std::vector<mrpt::math::TPoint2D>& legsWorld,
+											  const std::vector<double>& legProbability,
+											  const mrpt::poses::CPose2D& sensorPose, double t_s, bool useEvidence)
 {
-	m_frame = TDynamicFrame();
-	m_frame.scan_index = m_scans++;
-	m_frame.pending_since_scan = m_frame.scan_index + 1;
-	m_frame.t_s = t_s;
-	m_frame.robot_pose = robotPose;
-	m_frame.legs = m_detector.detect(scan);
-
-	std::vector<mrpt::math::TPoint2D> legsWorld;
-	for (const auto& l : m_frame.legs)
-	{
-		mrpt::math::TPoint2D w;
-		robotPose.composePoint(l.x_m, l.y_m, w.x, w.y);
-		legsWorld.push_back(w);
-	}
-	const mrpt::poses::CPose2D sensorPose = robotPose + mrpt::poses::CPose2D(scan.sensorPose);
-
-	for (const auto& l : legsWorld) m_frame.leg_in_free_space.push_back(seenFreeBefore(l, sensorPose));
-	if (m_options.camera_cues.enabled) markCameraCueEvidence(t_s);
 	constexpr double kNever = std::numeric_limits<double>::infinity();
-	for (const auto& l : legsWorld)
-		m_frame.leg_static_since_s.push_back(m_options.static_evidence ? m_static.staticSince(l, t_s) : kNever);
-	const bool useEvidence = m_options.tracker.confirm_free_hits > 0;
-	std::vector<double> legProbability;
-	for (const auto& l : m_frame.legs) legProbability.push_back(l.leg_probability);
-	m_frame.leg_track = m_legs.update(legsWorld, sensorPose, t_s, useEvidence ? &m_frame.leg_in_free_space : nullptr,
-									  &m_frame.leg_static_since_s, &legProbability);
 	std::vector<mrpt::math::TPoint2D> personsWorld;
 	std::vector<int> personOfLeg;
 	pairLegs(legsWorld, personsWorld, personOfLeg);
@@ -181,6 +157,38 @@ const TDynamicFrame& CDynamicObjectFilter::process(const mrpt::obs::CObservation
 		m_frame.leg_is_dynamic[i] = (leg && leg->state == ETrackState::dynamic) ||
 									(person && person->state == ETrackState::dynamic);
 	}
+}
+
+const TDynamicFrame& CDynamicObjectFilter::process(const mrpt::obs::CObservation2DRangeScan& scan,
+												   const mrpt::poses::CPose2D& robotPose, double t_s)
+{
+	m_frame = TDynamicFrame();
+	m_frame.scan_index = m_scans++;
+	m_frame.pending_since_scan = m_frame.scan_index + 1;
+	m_frame.t_s = t_s;
+	m_frame.robot_pose = robotPose;
+	m_frame.legs = m_detector.detect(scan);
+
+	std::vector<mrpt::math::TPoint2D> legsWorld;
+	for (const auto& l : m_frame.legs)
+	{
+		mrpt::math::TPoint2D w;
+		robotPose.composePoint(l.x_m, l.y_m, w.x, w.y);
+		legsWorld.push_back(w);
+	}
+	const mrpt::poses::CPose2D sensorPose = robotPose + mrpt::poses::CPose2D(scan.sensorPose);
+
+	for (const auto& l : legsWorld) m_frame.leg_in_free_space.push_back(seenFreeBefore(l, sensorPose));
+	if (m_options.camera_cues.enabled) markCameraCueEvidence(t_s);
+	constexpr double kNever = std::numeric_limits<double>::infinity();
+	for (const auto& l : legsWorld)
+		m_frame.leg_static_since_s.push_back(m_options.static_evidence ? m_static.staticSince(l, t_s) : kNever);
+	const bool useEvidence = m_options.tracker.confirm_free_hits > 0;
+	std::vector<double> legProbability;
+	for (const auto& l : m_frame.legs) legProbability.push_back(l.leg_probability);
+	m_frame.leg_track = m_legs.update(legsWorld, sensorPose, t_s, useEvidence ? &m_frame.leg_in_free_space : nullptr,
+									  &m_frame.leg_static_since_s, &legProbability);
+	updatePersonTracks(legsWorld, legProbability, sensorPose, t_s, useEvidence);
 	m_frame.leg_tracks = m_legs.tracks();
 	m_frame.person_tracks = m_persons.tracks();
 	buildMask(scan, robotPose);

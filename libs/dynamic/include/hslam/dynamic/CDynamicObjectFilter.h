@@ -191,6 +191,10 @@ class CDynamicObjectFilter
 				  std::vector<int>& personOfLeg) const;
 	void buildMask(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& robotPose);
 	void collectLateExclusions(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& robotPose);
+	/** Pairs this scan's legs into people, updates the person tracker with
+	 * their evidence, and fills m_frame.person_track and leg_is_dynamic. */
+	void updatePersonTracks(const std::vector<mrpt::math::TPoint2D>& legsWorld, const std::vector<double>& legProbability,
+							const mrpt::poses::CPose2D& sensorPose, double t_s, bool useEvidence);
 	/** Radius of the disc around person track `t` whose beams are masked. */
 	double maskRadius(const TTrack& t) const;
 	bool seenFreeBefore(const mrpt::math::TPoint2D& legWorld, const mrpt::poses::CPose2D& sensorPose) const;

@@ -34,12 +34,49 @@ class CTempDir
 /** Runs a shell command, returns its exit status (0 = success). */
 int runCommand(const std::string& command);
 
+/** Exit status and the standard output + standard error of a command. */
+struct TCommandOutput
+{
+	int exitCode = -1;
+	std::string out;
+};
+/** Runs a shell command, capturing its standard output and standard error. */
+TCommandOutput runCapturingOutput(const std::string& command);
+
+/** The whole text of a file ("" if it cannot be read). */
+std::string readTextFile(const std::string& path);
+
 }  // namespace hslam::testing
 
+#include <array>
+#include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <sstream>
 #include <sys/wait.h>
 inline int hslam::testing::runCommand(const std::string& command)
 {
 	const int status = std::system(command.c_str());
 	return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+inline hslam::testing::TCommandOutput hslam::testing::runCapturingOutput(const std::string& command)
+{
+	TCommandOutput r;
+	std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen((command + " 2>&1").c_str(), "r"), pclose);
+	if (!pipe) return r;
+	std::array<char, 4096> buffer{};
+	while (fgets(buffer.data(), buffer.size(), pipe.get())) r.out += buffer.data();
+	const int status = pclose(pipe.release());
+	r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+	return r;
+}
+
+inline std::string hslam::testing::readTextFile(const std::string& path)
+{
+	std::ifstream in(path);
+	std::stringstream text;
+	text << in.rdbuf();
+	return text.str();
 }
