@@ -31,10 +31,16 @@ mrpt::img::CImage renderGrid(const CTiledOccupancyGrid& grid, const TImageFrame&
 	for (int gy = frame.cells.gyMin; gy <= frame.cells.gyMax; ++gy)
 		for (int gx = frame.cells.gxMin; gx <= frame.cells.gxMax; ++gx)
 		{
+			// Pixels in memory are B, G, R (what CImage::setPixel writes for 0xRRGGBB).
 			const size_t colour = cellColour(grid, {gx, gy});
+			const uint8_t bgr[3] = {static_cast<uint8_t>(colour & 0xFF), static_cast<uint8_t>((colour >> 8) & 0xFF),
+									static_cast<uint8_t>((colour >> 16) & 0xFF)};
 			const int col0 = (gx - frame.cells.gxMin) * k, row0 = (frame.cells.gyMax - gy) * k;
 			for (int dy = 0; dy < k; ++dy)
-				for (int dx = 0; dx < k; ++dx) image.setPixel(col0 + dx, row0 + dy, colour);
+			{
+				uint8_t* pixel = image.ptr<uint8_t>(static_cast<unsigned>(col0), static_cast<unsigned>(row0 + dy));
+				for (int dx = 0; dx < k; ++dx, pixel += 3) std::copy(bgr, bgr + 3, pixel);
+			}
 		}
 	return image;
 }
