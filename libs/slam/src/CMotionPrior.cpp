@@ -24,9 +24,18 @@ TMotionPrior CMotionPrior::constantVelocity(double dt_s, const std::string& reas
 
 bool CMotionPrior::isJump(const mrpt::poses::CPose2D& delta, double dt_s) const
 {
-	if (dt_s <= 0) return false;  // no usable interval: nothing to compare with
-	return delta.norm() > m_options.max_speed_mps * dt_s ||
-		   std::abs(delta.phi()) > m_options.max_turn_rate_rad_s * dt_s;
+	const double dt = std::max(dt_s, m_options.min_interval_s);
+	if (dt <= 0) return false;  // no usable interval: nothing to compare with
+	return delta.norm() > m_options.max_speed_mps * dt || std::abs(delta.phi()) > m_options.max_turn_rate_rad_s * dt;
+}
+
+Eigen::Vector3d CMotionPrior::possibleVelocity(const mrpt::poses::CPose2D& d, double dt_s) const
+{
+	Eigen::Vector3d v(d.x() / dt_s, d.y() / dt_s, mrpt::math::wrapToPi(d.phi()) / dt_s);
+	const double speed = v.head<2>().norm();
+	if (speed > m_options.max_speed_mps) v.head<2>() *= m_options.max_speed_mps / speed;
+	v.z() = std::clamp(v.z(), -m_options.max_turn_rate_rad_s, m_options.max_turn_rate_rad_s);
+	return v;
 }
 
 TMotionPrior CMotionPrior::prior(const TOdometryIncrement& increment, double t_s)
@@ -67,11 +76,10 @@ void CMotionPrior::observeMatch(const mrpt::poses::CPose2D& measured, const Eige
 	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(covariance.topLeftCorner<2, 2>());
 	if (!(eig.eigenvalues().maxCoeff() <= m_options.measured_max_std_m * m_options.measured_max_std_m)) return;
 	m_rejectedInARow = accepted ? 0 : m_rejectedInARow + 1;
-	if (m_havePreviousMatch && t_s > m_previousMatch_s && (m_stalled || m_rejectedInARow > 1))
+	if (m_havePreviousMatch && t_s - m_previousMatch_s >= m_options.min_interval_s &&
+		t_s > m_previousMatch_s && (m_stalled || m_rejectedInARow > 1))
 	{  // the estimate follows odometry until the filter lets go: take the measured velocity
-		const double dt = t_s - m_previousMatch_s;
-		const mrpt::poses::CPose2D d = measured - m_previousMatch;
-		m_velocity = Eigen::Vector3d(d.x() / dt, d.y() / dt, mrpt::math::wrapToPi(d.phi()) / dt);
+		m_velocity = possibleVelocity(measured - m_previousMatch, t_s - m_previousMatch_s);
 		m_measuredVelocity_s = t_s;
 	}
 	m_previousMatch = measured, m_previousMatch_s = t_s, m_havePreviousMatch = true;
@@ -81,15 +89,18 @@ void CMotionPrior::observePose(const mrpt::poses::CPose2D& pose, double t_s)
 {
 	if (m_havePose && t_s > m_lastPose_s)
 	{
-		const double dt = t_s - m_lastPose_s;
 		const mrpt::poses::CPose2D d = pose - m_lastPose;  // in the previous robot frame
-		const bool measuredVelocity = m_measuredVelocity_s == t_s;
-		if (!measuredVelocity) m_velocity = Eigen::Vector3d(d.x() / dt, d.y() / dt, mrpt::math::wrapToPi(d.phi()) / dt);
+		// The velocity over min_interval_s at least: from the newest estimate that old.
+		while (m_poseHistory.size() > 1 && m_poseHistory[1].first <= t_s - m_options.min_interval_s)
+			m_poseHistory.pop_front();
+		const auto& [base_s, basePose] = m_poseHistory.front();
+		if (m_measuredVelocity_s != t_s && t_s > base_s) m_velocity = possibleVelocity(pose - basePose, t_s - base_s);
 		m_recent.push_back({t_s, m_lastOdometry.norm(), std::abs(m_lastOdometry.phi()), d.norm(),
 							std::abs(mrpt::math::wrapToPi(d.phi()))});
 		while (!m_recent.empty() && m_recent.front().t_s < t_s - m_options.disagreement_window_s) m_recent.pop_front();
 	}
 	m_lastPose = pose, m_lastPose_s = t_s, m_havePose = true;
+	m_poseHistory.emplace_back(t_s, pose);
 }
 
 }  // namespace hslam::slam
