@@ -21,23 +21,41 @@ mrpt::slam::CICP::TConfigParams toMrpt(const CIcpMatcher::TOptions& o)
 	p.thresholdAng = o.threshold_ang_rad;
 	p.ALFA = o.alfa;
 	p.smallestThresholdDist = o.smallest_threshold_dist_m;
+	p.minAbsStep_trans = static_cast<float>(o.min_step_m);
+	p.minAbsStep_rot = static_cast<float>(o.min_step_rad);
 	p.onlyUniqueRobust = o.only_unique_robust;
 	p.corresponding_points_decimation = static_cast<uint32_t>(o.decimation);
+	// MRPT's own (finite-difference) covariance is only wanted when it is the
+	// one reported; the geometric one replaces it otherwise (finished()).
+	p.skip_cov_calculation = o.covariance != "mrpt";
 	return p;
+}
+
+CPointToPointIcp::TOptions toCached(const CIcpMatcher::TOptions& o)
+{
+	CPointToPointIcp::TOptions c;
+	c.max_iterations = o.max_iterations;
+	c.threshold_dist_m = o.threshold_dist_m;
+	c.threshold_ang_rad = o.threshold_ang_rad;
+	c.alfa = o.alfa;
+	c.smallest_threshold_dist_m = o.smallest_threshold_dist_m;
+	c.min_step_m = o.min_step_m;
+	c.min_step_rad = o.min_step_rad;
+	c.only_unique_robust = o.only_unique_robust;
+	c.decimation = o.decimation;
+	c.cached_neighbours = o.cached_neighbours;
+	return c;
 }
 }  // namespace
 
-TPoseMatch CIcpMatcher::match(const mrpt::maps::CSimplePointsMap& reference, const mrpt::maps::CSimplePointsMap& current,
-							  const mrpt::poses::CPose2D& initialGuess, const Eigen::Matrix3d& initialCov) const
+CIcpMatcher::CIcpMatcher(const TOptions& options) : m_options(options), m_cached(toCached(options)) {}
+
+template <class AlignAt>
+TPoseMatch CIcpMatcher::bestOfRestarts(AlignAt alignAt, const mrpt::poses::CPose2D& initialGuess,
+									   const Eigen::Matrix3d& initialCov) const
 {
-	if (reference.size() < 10 || current.size() < 10)
-	{
-		TPoseMatch failed;
-		failed.method = "icp";
-		return failed;  // too few points
-	}
-	TPoseMatch best = alignOnce(reference, current, initialGuess, initialCov);
-	if (best.score >= m_options.restart_below_goodness) return finished(best, reference, current);
+	TPoseMatch best = alignAt(initialGuess);
+	if (best.score >= m_options.restart_below_goodness) return best;
 	const double step = std::clamp(std::sqrt(std::max(0.0, initialCov(2, 2))), m_options.restart_min_step_rad,
 								   m_options.restart_max_step_rad);
 	// Among results paired about as well as the best one (within
@@ -45,7 +63,7 @@ TPoseMatch CIcpMatcher::match(const mrpt::maps::CSimplePointsMap& reference, con
 	// (Mahalanobis): a wrong basin can pair marginally more points.
 	std::vector<TPoseMatch> candidates{best};
 	for (const double k : {1.0, -1.0, 2.0, -2.0})
-		candidates.push_back(alignOnce(reference, current, initialGuess + mrpt::poses::CPose2D(0, 0, k * step), initialCov));
+		candidates.push_back(alignAt(initialGuess + mrpt::poses::CPose2D(0, 0, k * step)));
 	double bestScore = 0;
 	for (const auto& c : candidates) bestScore = std::max(bestScore, c.score);
 	const Eigen::Matrix3d priorInfo = (initialCov + Eigen::Matrix3d::Identity() * 1e-9).inverse();
@@ -58,7 +76,42 @@ TPoseMatch CIcpMatcher::match(const mrpt::maps::CSimplePointsMap& reference, con
 		const double distance = d.dot(priorInfo * d);
 		if (distance < bestDistance) bestDistance = distance, best = c;
 	}
-	return finished(best, reference, current);
+	return best;
+}
+
+TPoseMatch CIcpMatcher::match(const mrpt::maps::CSimplePointsMap& reference, const mrpt::maps::CSimplePointsMap& current,
+							  const mrpt::poses::CPose2D& initialGuess, const Eigen::Matrix3d& initialCov) const
+{
+	if (reference.size() < 10 || current.size() < 10)
+	{
+		TPoseMatch failed;
+		failed.method = "icp";
+		return failed;  // too few points
+	}
+	const auto alignAt = [&](const mrpt::poses::CPose2D& seed) { return alignOnce(reference, current, seed, initialCov); };
+	return finished(bestOfRestarts(alignAt, initialGuess, initialCov), reference, current);
+}
+
+TPoseMatch CIcpMatcher::match(const CPointIndex2D& reference, const mrpt::maps::CSimplePointsMap& current,
+							  const mrpt::poses::CPose2D& initialGuess, const Eigen::Matrix3d& initialCov) const
+{
+	TPoseMatch failed;
+	failed.method = "icp";
+	if (reference.size() < 10 || current.size() < 10) return failed;  // too few points
+	const float* xs = current.getPointsBufferRef_x().data();
+	const float* ys = current.getPointsBufferRef_y().data();
+	const auto alignAt = [&](const mrpt::poses::CPose2D& seed)
+	{
+		const auto r = m_cached.align(reference, xs, ys, current.size(), seed);
+		TPoseMatch m = failed;
+		m.pose = r.pose;
+		m.score = r.goodness;
+		m.correspondences = static_cast<size_t>(std::lround(r.goodness * current.size()));
+		return m;
+	};
+	TPoseMatch best = bestOfRestarts(alignAt, initialGuess, initialCov);
+	best.covariance = geometricAlignmentCovariance(reference, current, best.pose, m_options.geometric);
+	return withQuality(best);
 }
 
 TPoseMatch CIcpMatcher::alignOnce(const mrpt::maps::CSimplePointsMap& reference,
@@ -78,6 +131,7 @@ TPoseMatch CIcpMatcher::alignOnce(const mrpt::maps::CSimplePointsMap& reference,
 	gaussian.copyFrom(*pdf);
 	result.pose = gaussian.mean;
 	result.score = info.goodness;
+
 	result.correspondences = static_cast<size_t>(std::lround(info.goodness * current.size()));
 	for (int r = 0; r < 3; ++r)
 		for (int c = 0; c < 3; ++c) result.covariance(r, c) = gaussian.cov(r, c);
@@ -91,6 +145,11 @@ TPoseMatch CIcpMatcher::finished(TPoseMatch result, const mrpt::maps::CSimplePoi
 	// for the chosen result, not for every restart.
 	if (m_options.covariance == "geometric")
 		result.covariance = geometricAlignmentCovariance(reference, current, result.pose, m_options.geometric);
+	return withQuality(std::move(result));
+}
+
+TPoseMatch CIcpMatcher::withQuality(TPoseMatch result) const
+{
 	result.covariance(0, 0) += m_options.min_xy_std_m * m_options.min_xy_std_m;
 	result.covariance(1, 1) += m_options.min_xy_std_m * m_options.min_xy_std_m;
 	result.covariance(2, 2) += m_options.min_theta_std_rad * m_options.min_theta_std_rad;

@@ -2,24 +2,53 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace hslam::matching
 {
 namespace
 {
+/** Reference points seen through MRPT's map and k-d tree... */
+struct TMrptReference
+{
+	const mrpt::maps::CSimplePointsMap& map;
+	void nearest(float x, float y, size_t k, std::vector<size_t>& idx, std::vector<float>& d2) const
+	{
+		map.kdTreeNClosestPoint2DIdx(x, y, k, idx, d2);
+	}
+	Eigen::Vector2d point(size_t i) const { return {map.getPointsBufferRef_x()[i], map.getPointsBufferRef_y()[i]}; }
+};
+
+/** ...or through a CPointIndex2D. */
+struct TIndexReference
+{
+	const CPointIndex2D& index;
+	void nearest(float x, float y, size_t k, std::vector<size_t>& idx, std::vector<float>& d2) const
+	{
+		uint32_t found[32];
+		d2.resize(std::min<size_t>(k, 32));
+		const size_t n = index.nearest(x, y, d2.size(), found, d2.data());
+		idx.assign(found, found + n);
+		d2.resize(n);
+	}
+	Eigen::Vector2d point(size_t i) const { return {index.x(i), index.y(i)}; }
+};
+
 /** Unit normal of the reference points idx (PCA: smallest eigenvector). */
-bool fitNormal(const mrpt::maps::CSimplePointsMap& ref, const std::vector<size_t>& idx, Eigen::Vector2d& normal)
+template <class Reference>
+bool fitNormal(const Reference& ref, const std::vector<size_t>& idx, Eigen::Vector2d& normal)
 {
 	if (idx.size() < 3) return false;
 	Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-	for (size_t i : idx) mean += Eigen::Vector2d(ref.getPointsBufferRef_x()[i], ref.getPointsBufferRef_y()[i]);
+	for (size_t i : idx) mean += ref.point(i);
 	mean /= static_cast<double>(idx.size());
 	Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
 	for (size_t i : idx)
 	{
-		const Eigen::Vector2d d = Eigen::Vector2d(ref.getPointsBufferRef_x()[i], ref.getPointsBufferRef_y()[i]) - mean;
+		const Eigen::Vector2d d = ref.point(i) - mean;
 		scatter += d * d.transpose();
 	}
 	Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(scatter);
@@ -32,8 +61,8 @@ bool fitNormal(const mrpt::maps::CSimplePointsMap& ref, const std::vector<size_t
 namespace
 {
 /** The covariance for `count` current points given by `pointAt(k)` (robot frame). */
-template <class PointAt>
-Eigen::Matrix3d alignmentCovariance(const mrpt::maps::CSimplePointsMap& reference, size_t count, PointAt pointAt,
+template <class Reference, class PointAt>
+Eigen::Matrix3d alignmentCovariance(const Reference& reference, size_t count, PointAt pointAt,
 									const mrpt::poses::CPose2D& pose, const TGeometricCovarianceOptions& o,
 									size_t* matchedPoints)
 {
@@ -45,12 +74,12 @@ Eigen::Matrix3d alignmentCovariance(const mrpt::maps::CSimplePointsMap& referenc
 	for (size_t k = 0; k < count; ++k)
 	{
 		const auto w = pose + pointAt(k);
-		reference.kdTreeNClosestPoint2DIdx(static_cast<float>(w.x), static_cast<float>(w.y),
-										   static_cast<size_t>(o.normal_neighbours), idx, dist2);
+		reference.nearest(static_cast<float>(w.x), static_cast<float>(w.y), static_cast<size_t>(o.normal_neighbours),
+						  idx, dist2);
 		if (idx.empty() || dist2[0] > o.max_match_distance_m * o.max_match_distance_m) continue;
 		Eigen::Vector2d n;
 		if (!fitNormal(reference, idx, n)) continue;
-		const Eigen::Vector2d q(reference.getPointsBufferRef_x()[idx[0]], reference.getPointsBufferRef_y()[idx[0]]);
+		const Eigen::Vector2d q = reference.point(idx[0]);
 		const Eigen::Vector2d arm(w.x - pose.x(), w.y - pose.y());  // R p
 		const Eigen::Vector3d J(n.x(), n.y(), n.x() * -arm.y() + n.y() * arm.x());
 		H += J * J.transpose();
@@ -88,8 +117,8 @@ Eigen::Matrix3d geometricAlignmentCovariance(const mrpt::maps::CSimplePointsMap&
 	const auto& xs = current.getPointsBufferRef_x();
 	const auto& ys = current.getPointsBufferRef_y();
 	return alignmentCovariance(
-		reference, current.size(), [&](size_t k) { return mrpt::math::TPoint2D(xs[k], ys[k]); }, pose, o,
-		matchedPoints);
+		TMrptReference{reference}, current.size(), [&](size_t k) { return mrpt::math::TPoint2D(xs[k], ys[k]); },
+		pose, o, matchedPoints);
 }
 
 Eigen::Matrix3d geometricAlignmentCovariance(const mrpt::maps::CSimplePointsMap& reference,
@@ -98,7 +127,19 @@ Eigen::Matrix3d geometricAlignmentCovariance(const mrpt::maps::CSimplePointsMap&
 											 const TGeometricCovarianceOptions& o, size_t* matchedPoints)
 {
 	return alignmentCovariance(
-		reference, current.size(), [&](size_t k) { return current[k]; }, pose, o, matchedPoints);
+		TMrptReference{reference}, current.size(), [&](size_t k) { return current[k]; }, pose, o, matchedPoints);
+}
+
+Eigen::Matrix3d geometricAlignmentCovariance(const CPointIndex2D& reference,
+											 const mrpt::maps::CSimplePointsMap& current,
+											 const mrpt::poses::CPose2D& pose,
+											 const TGeometricCovarianceOptions& o, size_t* matchedPoints)
+{
+	const auto& xs = current.getPointsBufferRef_x();
+	const auto& ys = current.getPointsBufferRef_y();
+	return alignmentCovariance(
+		TIndexReference{reference}, current.size(),
+		[&](size_t k) { return mrpt::math::TPoint2D(xs[k], ys[k]); }, pose, o, matchedPoints);
 }
 
 }  // namespace hslam::matching

@@ -127,7 +127,13 @@ std::optional<matching::TPoseMatch> CScanMatchingPoseEstimator::runIcp(
 	common::CStageTimer::CScope t(m_timer, "icp");
 	if (m_options.icp_matcher == "point_to_line") return runPointToLineIcp(scan, seedsWorld);
 	if (m_keyframes.empty()) return std::nullopt;
-	const auto& reference = m_keyframes.reference(seedsWorld.front());
+	const mrpt::poses::CPose2D& around = seedsWorld.front();
+	const auto matchAt = [&](const matching::CIcpMatcher& icp, const mrpt::poses::CPose2D& seed)
+	{
+		if (icp.options().engine == "cached")
+			return icp.match(m_keyframes.referenceIndex(around), frame.pointsMap, seed, m_ukf.covariance());
+		return icp.match(m_keyframes.reference(around), frame.pointsMap, seed, m_ukf.covariance());
+	};
 	std::optional<matching::TPoseMatch> best;
 	for (const auto& seed : seedsWorld)
 	{
@@ -138,7 +144,7 @@ std::optional<matching::TPoseMatch> CScanMatchingPoseEstimator::runIcp(
 		// or to check odometry's claim that the robot stands still (a timed
 		// match), a weakly constrained direction is better measured than not.
 		const matching::CIcpMatcher& icp = m_gapSinceMatch || m_timedMatch ? m_icpWithoutPrior : m_icp;
-		auto m = icp.match(reference, frame.pointsMap, seed, m_ukf.covariance());
+		auto m = matchAt(icp, seed);
 		if (!best || m.score > best->score + m_icp.options().restart_goodness_tolerance) best = std::move(m);
 	}
 	if (usesPointToLine() && best && best->quality != matching::EMatchQuality::failed)

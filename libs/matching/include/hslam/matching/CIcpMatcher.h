@@ -16,6 +16,7 @@
  * by fusion::CAdaptiveMeasurementNoise. */
 #pragma once
 
+#include <hslam/matching/CPointToPointIcp.h>
 #include <hslam/matching/icp_covariance.h>
 #include <hslam/matching/match_result.h>
 #include <mrpt/maps/CSimplePointsMap.h>
@@ -30,12 +31,21 @@ class CIcpMatcher
    public:
 	struct TOptions
 	{
+		/** "mrpt": mrpt::slam::CICP on a CSimplePointsMap reference; "cached":
+		 * CPointToPointIcp (the same classic algorithm, exact nearest
+		 * neighbours cached between iterations) on a CPointIndex2D. */
+		std::string engine = "mrpt";
+		int cached_neighbours = 4;  //!< candidates kept per scan point (engine = cached)
 		std::string algorithm = "classic";  //!< MRPT ICP_algorithm: "classic" or "levenberg_marquardt"
 		int max_iterations = 80;
 		double threshold_dist_m = 0.5;  //!< initial pairing distance (MRPT thresholdDist)
 		double threshold_ang_rad = 5.0 * M_PI / 180.0;  //!< pairing distance growth with range (MRPT thresholdAng)
 		double alfa = 0.6;  //!< threshold shrink factor after each convergence (MRPT ALFA)
 		double smallest_threshold_dist_m = 0.05;  //!< final pairing distance (MRPT smallestThresholdDist)
+		/** A pairing threshold is kept until one iteration moves the pose
+		 * less than this (MRPT minAbsStep_trans / minAbsStep_rot). */
+		double min_step_m = 1e-6;
+		double min_step_rad = 1e-6;
 		bool only_unique_robust = true;  //!< unique correspondences in both directions
 		int decimation = 1;  //!< use every k-th point of the scan (MRPT corresponding_points_decimation)
 		double min_goodness = 0.5;  //!< below: weak match (fraction of points paired at the end)
@@ -52,12 +62,16 @@ class CIcpMatcher
 		template <class V>
 		void visit(V& v)
 		{
+			v.choice("engine", engine, {"mrpt", "cached"});
+			v.integer("cached_neighbours", cached_neighbours, 1, 16);
 			v.choice("algorithm", algorithm, {"classic", "levenberg_marquardt"});
 			v.integer("max_iterations", max_iterations, 1, 1000);
 			v.real("threshold_dist_m", threshold_dist_m, 0.01, 10.0);
 			v.degrees("threshold_ang_deg", threshold_ang_rad, 0.0, 45.0);
 			v.real("alfa", alfa, 0.05, 0.99);
 			v.real("smallest_threshold_dist_m", smallest_threshold_dist_m, 0.001, 5.0);
+			v.real("min_step_m", min_step_m, 0.0, 0.1);
+			v.degrees("min_step_deg", min_step_rad, 0.0, 5.0);
 			v.flag("only_unique_robust", only_unique_robust);
 			v.integer("decimation", decimation, 1, 100);
 			v.real("min_goodness", min_goodness, 0.0, 1.0);
@@ -78,16 +92,27 @@ class CIcpMatcher
 	};
 
 	CIcpMatcher() : CIcpMatcher(TOptions()) {}
-	explicit CIcpMatcher(const TOptions& options) : m_options(options) {}
+	explicit CIcpMatcher(const TOptions& options);
 
 	/** Pose of the `current` points (robot frame) in the frame of `reference`,
 	 * starting from `initialGuess` with uncertainty `initialCov`. */
 	TPoseMatch match(const mrpt::maps::CSimplePointsMap& reference, const mrpt::maps::CSimplePointsMap& current,
 					 const mrpt::poses::CPose2D& initialGuess, const Eigen::Matrix3d& initialCov) const;
 
+	/** The same with the reference in a CPointIndex2D (engine = cached;
+	 * classic algorithm only). */
+	TPoseMatch match(const CPointIndex2D& reference, const mrpt::maps::CSimplePointsMap& current,
+					 const mrpt::poses::CPose2D& initialGuess, const Eigen::Matrix3d& initialCov) const;
+
 	const TOptions& options() const { return m_options; }
 
    private:
+	/** The first alignment, or the best of the restarts around the prior. */
+	template <class AlignAt>
+	TPoseMatch bestOfRestarts(AlignAt alignAt, const mrpt::poses::CPose2D& initialGuess,
+							  const Eigen::Matrix3d& initialCov) const;
+	/** The chosen result's floors and quality (its covariance already set). */
+	TPoseMatch withQuality(TPoseMatch result) const;
 	/** One MRPT ICP run: pose, score and MRPT's covariance (no floors, no quality yet). */
 	TPoseMatch alignOnce(const mrpt::maps::CSimplePointsMap& reference, const mrpt::maps::CSimplePointsMap& current,
 						 const mrpt::poses::CPose2D& seed, const Eigen::Matrix3d& seedCov) const;
@@ -96,6 +121,7 @@ class CIcpMatcher
 						const mrpt::maps::CSimplePointsMap& current) const;
 
 	TOptions m_options;
+	CPointToPointIcp m_cached;
 };
 
 }  // namespace hslam::matching

@@ -4,9 +4,15 @@
  * keyframes instead of only the previous scan stops the random-walk drift of
  * pure frame-to-frame matching; keeping only a bounded window (the most recent
  * keyframes and those within radius_m) keeps old, possibly misaligned parts
- * of the map from pulling the match after a long loop. */
+ * of the map from pulling the match after a long loop.
+ *
+ * With voxel_size_m > 0 the points of the window are merged per cell
+ * (centroid), so that a wall's weight in the match does not grow with the
+ * number of keyframes that saw it, and the reference (rebuilt, with its k-d
+ * tree, whenever a keyframe is added) stays a few times smaller. */
 #pragma once
 
+#include <hslam/matching/CPointIndex2D.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/math/TPoint2D.h>
 #include <mrpt/poses/CPose2D.h>
@@ -26,6 +32,13 @@ class CKeyframePointMap
 		int max_keyframes = 40;  //!< keyframes kept (oldest dropped); 0 = unlimited
 		double radius_m = 0;  //!< also drop keyframes further than this from the robot; 0 = no limit
 		double min_point_spacing_m = 0.03;  //!< points closer than this to the previous one are skipped
+		/** Reference points of all keyframes merged per square cell of this
+		 * size (centroid of the cell's points); 0 = every keyframe point. */
+		double voxel_size_m = 0;
+		/** referenceIndex(): keyframes added since the last full rebuild of
+		 * the bulk k-d tree before it is rebuilt (they sit in a small tree
+		 * of their own until then; queries are exact either way). */
+		int index_rebuild_keyframes = 8;
 
 		template <class V>
 		void visit(V& v)
@@ -35,6 +48,8 @@ class CKeyframePointMap
 			v.integer("max_keyframes", max_keyframes, 0, 100000);
 			v.real("radius_m", radius_m, 0.0, 10000.0);
 			v.real("min_point_spacing_m", min_point_spacing_m, 0.0, 1.0);
+			v.real("voxel_size_m", voxel_size_m, 0.0, 1.0);
+			v.integer("index_rebuild_keyframes", index_rebuild_keyframes, 1, 1000);
 		}
 	};
 
@@ -53,8 +68,20 @@ class CKeyframePointMap
 	/** World-frame points of the keyframes in the window around `robotPose`
 	 * (rebuilt only when the window changes). */
 	const mrpt::maps::CSimplePointsMap& reference(const mrpt::poses::CPose2D& robotPose);
+	/** The same points in a CPointIndex2D (for CPointToPointIcp). */
+	const CPointIndex2D& referenceIndex(const mrpt::poses::CPose2D& robotPose);
 
    private:
+	/** Updates the window of keyframes around robotPose; true if it changed. */
+	bool updateWindow(const mrpt::poses::CPose2D& robotPose);
+	/** World points of the window (merged per voxel if voxel_size_m > 0). */
+	void windowPoints(std::vector<float>& xs, std::vector<float>& ys) const;
+	void mergedWindowPoints(std::vector<float>& xs, std::vector<float>& ys) const;
+	/** Brings m_index to the window by retiring and appending keyframes;
+	 * false if it needs a full rebuild instead. */
+	bool updateIndexIncrementally();
+	void rebuildIndex();
+
 	struct TKeyframe
 	{
 		mrpt::poses::CPose2D pose;
@@ -65,6 +92,11 @@ class CKeyframePointMap
 	std::vector<size_t> m_windowIds;  //!< ids of the keyframes in m_reference
 	size_t m_nextId = 0, m_firstId = 0;  //!< id of m_keyframes.front()
 	mrpt::maps::CSimplePointsMap m_reference;
+	CPointIndex2D m_index;
+	size_t m_indexFirstId = 0, m_indexEndId = 0;  //!< keyframe ids in m_index: [first, end)
+	size_t m_indexBulkKeyframes = 0;  //!< of which the first ones are in the bulk tree
+	std::deque<size_t> m_indexPointCounts;  //!< points of each keyframe in m_index, oldest first
+	bool m_referenceStale = true, m_indexStale = true;
 };
 
 }  // namespace hslam::matching

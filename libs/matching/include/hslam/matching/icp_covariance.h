@@ -13,6 +13,7 @@
  * direction there, and the estimate slid along simulated corridors. */
 #pragma once
 
+#include <hslam/matching/CPointIndex2D.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/poses/CPose2D.h>
 
@@ -48,6 +49,12 @@ Eigen::Matrix3d geometricAlignmentCovariance(const mrpt::maps::CSimplePointsMap&
 /** The same for current points given in the robot frame. */
 Eigen::Matrix3d geometricAlignmentCovariance(const mrpt::maps::CSimplePointsMap& reference,
 											 const std::vector<mrpt::math::TPoint2D>& current,
+											 const mrpt::poses::CPose2D& pose,
+											 const TGeometricCovarianceOptions& options, size_t* matchedPoints = nullptr);
+
+/** The same with the reference in a CPointIndex2D (CPointToPointIcp). */
+Eigen::Matrix3d geometricAlignmentCovariance(const CPointIndex2D& reference,
+											 const mrpt::maps::CSimplePointsMap& current,
 											 const mrpt::poses::CPose2D& pose,
 											 const TGeometricCovarianceOptions& options, size_t* matchedPoints = nullptr);
 

@@ -1,0 +1,181 @@
+/* CPointIndex2D (exact k nearest live points across its bulk and recent
+ * parts) and CPointToPointIcp (MRPT's classic ICP with cached nearest
+ * neighbours): checked against brute force and against mrpt::slam::CICP
+ * itself on the same clouds. */
+#include <gtest/gtest.h>
+#include <hslam/matching/CPointIndex2D.h>
+#include <hslam/matching/CPointToPointIcp.h>
+#include <hslam/matching/scan_points.h>
+#include <mrpt/poses/CPosePDFGaussian.h>
+#include <mrpt/random/RandomGenerators.h>
+#include <mrpt/slam/CICP.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+using namespace hslam::matching;
+using mrpt::math::TPoint2D;
+using mrpt::poses::CPose2D;
+
+namespace
+{
+constexpr double kDeg = M_PI / 180;
+
+/** Squared distances of the k nearest of `live` indices, by brute force. */
+std::vector<float> bruteForce(const std::vector<float>& xs, const std::vector<float>& ys, const std::vector<size_t>& live,
+							  float x, float y, size_t k)
+{
+	std::vector<float> d2;
+	for (size_t i : live) d2.push_back((xs[i] - x) * (xs[i] - x) + (ys[i] - y) * (ys[i] - y));
+	std::sort(d2.begin(), d2.end());
+	d2.resize(std::min(k, d2.size()));
+	return d2;
+}
+
+void addWall(std::vector<TPoint2D>& points, TPoint2D a, TPoint2D b, double step_m)
+{
+	const int n = static_cast<int>(std::lround(std::hypot(b.x - a.x, b.y - a.y) / step_m));
+	for (int k = 0; k <= n; ++k) points.push_back({a.x + (b.x - a.x) * k / n, a.y + (b.y - a.y) * k / n});
+}
+
+/** An 8 x 5 m room with an off-centre box and a recess (no symmetry). */
+std::vector<TPoint2D> room(double step_m)
+{
+	std::vector<TPoint2D> p;
+	addWall(p, {-4, -2.5}, {4, -2.5}, step_m);
+	addWall(p, {4, -2.5}, {4, 2.5}, step_m);
+	addWall(p, {4, 2.5}, {0.5, 2.5}, step_m);
+	addWall(p, {0.5, 2.5}, {0.5, 3.2}, step_m);
+	addWall(p, {0.5, 3.2}, {-0.5, 3.2}, step_m);
+	addWall(p, {-0.5, 3.2}, {-0.5, 2.5}, step_m);
+	addWall(p, {-0.5, 2.5}, {-4, 2.5}, step_m);
+	addWall(p, {-4, 2.5}, {-4, -2.5}, step_m);
+	addWall(p, {1, 0.5}, {2, 0.5}, step_m);
+	addWall(p, {2, 0.5}, {2, 1.2}, step_m);
+	return p;
+}
+
+/** The room seen from `pose` (points in that frame), with range noise-free jitter. */
+std::vector<TPoint2D> seenFrom(const CPose2D& pose, const std::vector<TPoint2D>& world)
+{
+	std::vector<TPoint2D> local;
+	for (const auto& w : world) local.push_back(pose.inverseComposePoint(w));
+	return local;
+}
+}  // namespace
+
+TEST(PointIndex2D, NearestAreExactAcrossBulkRecentAndRetiredPoints)
+{
+	auto& rng = mrpt::random::getRandomGenerator();
+	rng.randomize(7);
+	std::vector<float> xs, ys;
+	for (int i = 0; i < 3000; ++i)
+		xs.push_back(static_cast<float>(rng.drawUniform(-10, 10))), ys.push_back(static_cast<float>(rng.drawUniform(-10, 10)));
+	CPointIndex2D index;
+	index.build({xs.begin(), xs.begin() + 2000}, {ys.begin(), ys.begin() + 2000});
+	index.retireBelow(500);
+	index.append({xs.begin() + 2000, xs.end()}, {ys.begin() + 2000, ys.end()});
+	std::vector<size_t> live(2500);
+	std::iota(live.begin(), live.end(), 500);
+	ASSERT_EQ(index.liveSize(), 2500u);
+	size_t fromRecent = 0;
+	for (int q = 0; q < 200; ++q)
+	{
+		const float x = static_cast<float>(rng.drawUniform(-11, 11)), y = static_cast<float>(rng.drawUniform(-11, 11));
+		uint32_t idx[6];
+		float d2[6];
+		ASSERT_EQ(index.nearest(x, y, 6, idx, d2), 6u);
+		const auto expected = bruteForce(xs, ys, live, x, y, 6);
+		for (size_t j = 0; j < 6; ++j)
+		{
+			EXPECT_NEAR(d2[j], expected[j], 1e-4f) << "query " << q << " rank " << j;
+			EXPECT_GE(idx[j], 500u);  // retired points are never returned
+			const float dx = index.x(idx[j]) - x, dy = index.y(idx[j]) - y;
+			EXPECT_NEAR(dx * dx + dy * dy, d2[j], 1e-4f);  // index addresses the returned point
+			fromRecent += idx[j] >= 2000;
+		}
+	}
+	EXPECT_GT(fromRecent, 100u);  // both parts were really searched
+}
+
+TEST(PointToPointIcp, AgreesWithMrptClassicIcp)
+{
+	const auto world = room(0.04);
+	const CPose2D truth(0.12, -0.07, 4 * kDeg);
+	const auto scan = seenFrom(truth, world);
+	std::vector<float> rx, ry;
+	for (const auto& p : world) rx.push_back(static_cast<float>(p.x)), ry.push_back(static_cast<float>(p.y));
+	CPointIndex2D reference;
+	reference.build(rx, ry);
+	const auto current = toPointsMap(scan);
+
+	CPointToPointIcp::TOptions o;
+	const CPointToPointIcp icp(o);
+	const CPose2D seed(0, 0, 0);
+	const auto ours = icp.align(reference, current.getPointsBufferRef_x().data(), current.getPointsBufferRef_y().data(),
+								current.size(), seed);
+
+	mrpt::slam::CICP mrptIcp;
+	mrptIcp.options.ICP_algorithm = mrpt::slam::icpClassic;
+	mrptIcp.options.maxIterations = o.max_iterations;
+	mrptIcp.options.thresholdDist = o.threshold_dist_m;
+	mrptIcp.options.thresholdAng = o.threshold_ang_rad;
+	mrptIcp.options.ALFA = o.alfa;
+	mrptIcp.options.smallestThresholdDist = o.smallest_threshold_dist_m;
+	mrptIcp.options.onlyUniqueRobust = o.only_unique_robust;
+	mrptIcp.options.corresponding_points_decimation = 1;
+	mrpt::slam::CICP::TReturnInfo info;
+	const auto worldMap = toPointsMap(world);
+	const auto pdf = mrptIcp.AlignPDF(&worldMap, &current,
+									  mrpt::poses::CPosePDFGaussian(seed), info);
+	const auto theirs = pdf->getMeanVal();
+	std::cout << "ours " << ours.pose << " (" << ours.iterations << " iterations, goodness " << ours.goodness
+			  << ", tree queries " << ours.tree_queries << ", cached " << ours.cached_answers << ")\n"
+			  << "MRPT " << theirs << " (" << info.nIterations << " iterations, goodness " << info.goodness << ")\n";
+	EXPECT_NEAR(ours.pose.x(), theirs.x(), 1e-4);
+	EXPECT_NEAR(ours.pose.y(), theirs.y(), 1e-4);
+	EXPECT_NEAR(ours.pose.phi(), theirs.phi(), 5e-5);  // MRPT sums in float
+	EXPECT_NEAR(ours.goodness, info.goodness, 1e-6);
+	EXPECT_EQ(ours.iterations, static_cast<int>(info.nIterations));
+	// The cache answered most queries.
+	EXPECT_EQ(ours.tree_queries + ours.cached_answers, static_cast<size_t>(ours.iterations) * current.size());
+	EXPECT_GT(ours.cached_answers, 2 * ours.tree_queries);
+}
+
+TEST(PointToPointIcp, CacheSizeDoesNotChangeTheResult)
+{
+	const auto world = room(0.03);
+	const auto scan = seenFrom(CPose2D(-0.2, 0.15, -6 * kDeg), world);
+	std::vector<float> rx, ry;
+	for (const auto& p : world) rx.push_back(static_cast<float>(p.x)), ry.push_back(static_cast<float>(p.y));
+	CPointIndex2D reference;
+	reference.build(rx, ry);
+	const auto current = toPointsMap(scan);
+	std::vector<CPose2D> poses;
+	for (int k : {1, 2, 4, 8})
+	{
+		CPointToPointIcp::TOptions o;
+		o.cached_neighbours = k;
+		const auto r = CPointToPointIcp(o).align(reference, current.getPointsBufferRef_x().data(),
+												 current.getPointsBufferRef_y().data(), current.size(), CPose2D());
+		poses.push_back(r.pose);
+	}
+	for (const auto& p : poses)
+	{
+		EXPECT_EQ(p.x(), poses.front().x());
+		EXPECT_EQ(p.y(), poses.front().y());
+		EXPECT_EQ(p.phi(), poses.front().phi());
+	}
+}
+
+TEST(PointToPointIcp, EmptyInputsReturnTheSeed)
+{
+	CPointIndex2D empty;
+	const CPointToPointIcp icp;
+	const float x = 1, y = 2;
+	const auto r = icp.align(empty, &x, &y, 1, CPose2D(1, 2, 0.3));
+	EXPECT_EQ(r.pose, CPose2D(1, 2, 0.3));
+	EXPECT_EQ(r.iterations, 0);
+	EXPECT_EQ(r.goodness, 0);
+}
