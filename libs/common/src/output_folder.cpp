@@ -1,4 +1,6 @@
 #include <hslam/common/output_folder.h>
+
+#include <sstream>
 #include <hslam/common/output_paths.h>
 
 #include <fcntl.h>
@@ -132,6 +134,13 @@ void writeFileAtomically(const std::string& path, const std::function<void(const
 		fs::remove(tmp, ec);
 		throw std::runtime_error(printableName(path) + ": write failed or cut short (disk full?): " + e.what());
 	}
+}
+
+void writeStreamAtomically(const std::string& path, const std::function<void(std::ostream&)>& writer)
+{
+	std::ostringstream text;
+	writer(text);
+	writeTextFileAtomically(path, text.str());
 }
 
 void writeTextFileAtomically(const std::string& path, const std::string& text)

@@ -1,4 +1,5 @@
 #include <hslam/common/parse_number.h>
+#include <hslam/common/output_folder.h>
 #include <hslam/common/tum_trajectory.h>
 
 #include <cmath>
@@ -11,16 +12,16 @@ namespace hslam::common
 {
 void writeTumFile(const std::string& path, const TTrajectory2D& trajectory)
 {
-	std::FILE* f = std::fopen(path.c_str(), "w");
-	if (!f) throw std::runtime_error(path + ": cannot open for writing");
-	std::fprintf(f, "# timestamp tx ty tz qx qy qz qw\n");
+	std::string text = "# timestamp tx ty tz qx qy qz qw\n";
+	char line[160];
 	for (const auto& p : trajectory)
 	{
 		const double half = 0.5 * p.pose.phi;
-		std::fprintf(f, "%.6f %.6f %.6f 0 0 0 %.9f %.9f\n", p.t_s, p.pose.x, p.pose.y, std::sin(half),
-					 std::cos(half));
+		std::snprintf(line, sizeof(line), "%.6f %.6f %.6f 0 0 0 %.9f %.9f\n", p.t_s, p.pose.x, p.pose.y,
+					  std::sin(half), std::cos(half));
+		text += line;
 	}
-	if (std::fclose(f) != 0) throw std::runtime_error(path + ": write failed");
+	writeTextFileAtomically(path, text);  // a cut-short write never replaces a previous file
 }
 
 TTrajectory2D parseTum(const std::string& text, const std::string& name)

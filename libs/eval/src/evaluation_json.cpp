@@ -1,4 +1,5 @@
 /* hslam: writing an evaluation as JSON. */
+#include <hslam/common/output_folder.h>
 #include <hslam/common/json_text.h>
 #include <hslam/eval/evaluation_json.h>
 
@@ -74,11 +75,7 @@ std::string evaluationToJson(const TTrajectoryErrors& errors)
 
 void writeEvaluationJson(const std::string& path, const TTrajectoryErrors& errors)
 {
-	std::ofstream out(path);
-	if (!out) throw std::runtime_error(path + ": cannot open for writing");
-	out << evaluationToJson(errors);
-	out.close();
-	if (!out) throw std::runtime_error(path + ": write failed");
+	common::writeTextFileAtomically(path, evaluationToJson(errors));
 }
 
 }  // namespace hslam::eval

@@ -104,11 +104,10 @@ void CBatchProcessor::writeEffectiveConfig(const CMappingPipeline& pipeline, con
 	pipeline.saveOptions(effective);
 	common::saveOptions(outputOptions, effective, "output");
 	const std::string path = m_request.output_dir + "/config_used.ini";
-	std::ofstream f(path);
-	f << "; Effective configuration of this run: every key the run read, defaults and --set overrides\n"
-	  << "; included, file paths absolute. hslam-process -c config_used.ini reproduces the run.\n"
-	  << effective.getContent();
-	if (!f) throw std::runtime_error(path + ": cannot write");
+	common::writeTextFileAtomically(
+		path, "; Effective configuration of this run: every key the run read, defaults and --set overrides\n"
+			  "; included, file paths absolute. hslam-process -c config_used.ini reproduces the run.\n" +
+				  effective.getContent());
 }
 
 void CBatchProcessor::printSummary(const CMappingPipeline& pipeline, const TBatchResult& result)

@@ -1,3 +1,4 @@
+#include <hslam/common/output_folder.h>
 #include <hslam/maps/grid_rendering.h>
 #include <hslam/slam/batch_outputs.h>
 #include <hslam/slam/loop_closure_outputs.h>
@@ -30,9 +31,13 @@ std::vector<mrpt::math::TPose2D> posesOf(const common::TTrajectory2D& trajectory
 	return poses;
 }
 
+/** Written under a temporary name, then renamed (a full disk never leaves a
+ * truncated image under the real name). */
 void savePng(const mrpt::img::CImage& image, const std::string& path)
 {
-	if (!image.saveToFile(path)) throw std::runtime_error(path + ": cannot write image");
+	common::writeFileAtomically(path, [&image](const std::string& tmp) {
+		if (!image.saveToFile(tmp)) throw std::runtime_error("cannot write image");
+	});
 }
 
 /** Renders `grid` in the frame of the main map with the trajectories. */
@@ -112,10 +117,8 @@ void writeTiles(const maps::CTiledOccupancyGrid& grid, int pixelsPerCell, const 
 
 void writeTiming(const common::CStageTimer& timer, const std::string& dir, std::vector<std::string>& written)
 {
-	std::ofstream csv(dir + "/timing.csv"), txt(dir + "/timing.txt");
-	if (!csv || !txt) throw std::runtime_error(dir + ": cannot write timing files");
-	timer.writeCsv(csv);
-	timer.printTable(txt);
+	common::writeStreamAtomically(dir + "/timing.csv", [&timer](std::ostream& csv) { timer.writeCsv(csv); });
+	common::writeStreamAtomically(dir + "/timing.txt", [&timer](std::ostream& txt) { timer.printTable(txt); });
 	written.push_back(dir + "/timing.csv");
 	written.push_back(dir + "/timing.txt");
 }
@@ -123,9 +126,7 @@ void writeDynamicObjects(const CMappingPipeline& pipeline, const std::string& di
 {
 	if (!pipeline.dynamicFilter()) return;
 	const std::string path = dir + "/tracks.csv";
-	std::ofstream csv(path);
-	dynamic::writeTracksCsv(csv, pipeline.trackRows());
-	if (!csv) throw std::runtime_error(path + ": cannot write");
+	common::writeStreamAtomically(path, [&pipeline](std::ostream& csv) { dynamic::writeTracksCsv(csv, pipeline.trackRows()); });
 	written.push_back(path);
 	if (pipeline.dynamicDebugFrames().empty()) return;
 	std::filesystem::create_directories(dir + "/dynamic");
@@ -141,8 +142,7 @@ void writeDynamicObjects(const CMappingPipeline& pipeline, const std::string& di
 
 void writePoseEstimatesCsv(const std::vector<CMappingPipeline::TTimedEstimate>& estimates, const std::string& path)
 {
-	std::ofstream f(path);
-	if (!f) throw std::runtime_error(path + ": cannot write");
+	common::writeStreamAtomically(path, [&estimates](std::ostream& f) {
 	f << "t_s,x_m,y_m,theta_rad,std_x_m,std_y_m,std_theta_rad,matched,match_method,match_quality,match_accepted,"
 		 "match_nis,motion_prior\n";
 	f.precision(9);
@@ -153,27 +153,29 @@ void writePoseEstimatesCsv(const std::vector<CMappingPipeline::TTimedEstimate>& 
 		  << std::sqrt(std::max(0.0, e.covariance(2, 2))) << ',' << (e.matched ? 1 : 0) << ','
 		  << (e.matched ? e.match_method : "") << ',' << (e.matched ? matching::toString(e.match_quality) : "") << ','
 		  << (e.match_accepted ? 1 : 0) << ',' << e.match_nis << ',' << e.motion_prior << '\n';
-	if (!f) throw std::runtime_error(path + ": write failed");
+	});
 }
 
 void writeSonarCornersCsv(const std::vector<sonar::TTbfCorner>& corners, const std::string& path)
 {
-	std::ofstream f(path);
-	if (!f) throw std::runtime_error(path + ": cannot write");
+	common::writeStreamAtomically(path, [&corners](std::ostream& f) {
 	f << "x_m,y_m,support,hypotheses,cov_xx_m2,cov_xy_m2,cov_yy_m2\n";
 	f.precision(9);
 	for (const auto& c : corners)
 		f << c.point.x << ',' << c.point.y << ',' << c.support << ',' << c.hypotheses << ',' << c.cov(0, 0) << ','
 		  << c.cov(0, 1) << ',' << c.cov(1, 1) << '\n';
-	if (!f) throw std::runtime_error(path + ": write failed");
+	});
 }
 
 void saveGridmapGz(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& path)
 {
-	mrpt::io::CFileGZOutputStream out;
-	if (!out.open(path)) throw std::runtime_error(path + ": cannot open for writing");
-	auto archive = mrpt::serialization::archiveFrom(out);
-	archive << grid;
+	common::writeFileAtomically(path, [&grid](const std::string& tmp) {
+		mrpt::io::CFileGZOutputStream out;
+		if (!out.open(tmp)) throw std::runtime_error("cannot open for writing");
+		auto archive = mrpt::serialization::archiveFrom(out);
+		archive << grid;
+		out.close();
+	});
 }
 
 std::vector<std::string> writeMappingOutputs(const CMappingPipeline& pipeline, const TOutputOptions& options,

@@ -1,3 +1,4 @@
+#include <hslam/common/output_folder.h>
 #include <hslam/common/version.h>
 #include <hslam/slam/html_report.h>
 
@@ -219,9 +220,7 @@ void writeHtmlReport(const TRunSummary& summary, const CMappingPipeline& pipelin
 	writeConfiguration(h, dir);
 	h << "</body>\n</html>\n";
 	const std::string path = (std::filesystem::path(dir) / "report.html").string();
-	std::ofstream f(path);
-	f << h.str();
-	if (!f) throw std::runtime_error(path + ": cannot write");
+	common::writeTextFileAtomically(path, h.str());
 }
 
 }  // namespace hslam::slam

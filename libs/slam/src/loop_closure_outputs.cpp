@@ -1,6 +1,8 @@
+#include <hslam/common/output_folder.h>
 #include <hslam/slam/loop_closure_outputs.h>
 
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace hslam::slam
@@ -51,20 +53,24 @@ void writeLoopClosureOutputs(const CMappingPipeline& pipeline, const std::string
 	written.push_back(dir + "/trajectory_online.tum");
 
 	const std::string csvPath = dir + "/loop_closures.csv";
-	std::ofstream csv(csvPath);
-	csv << graph::loopClosureCsvHeader() << '\n';
-	for (const auto& c : stage->backend().closures()) csv << graph::loopClosureCsvRow(c) << '\n';
-	if (!csv) throw std::runtime_error(csvPath + ": cannot write");
+	common::writeStreamAtomically(csvPath, [stage](std::ostream& csv) {
+		csv << graph::loopClosureCsvHeader() << '\n';
+		for (const auto& c : stage->backend().closures()) csv << graph::loopClosureCsvRow(c) << '\n';
+	});
 	written.push_back(csvPath);
 
-	stage->backend().graph().saveGraphFile(dir + "/graph.graph");
+	common::writeStreamAtomically(dir + "/graph.graph",
+								  [stage](std::ostream& out) { stage->backend().graph().writeGraphText(out); });
 	written.push_back(dir + "/graph.graph");
 
-	std::ofstream timing(dir + "/timing.txt", std::ios::app);
-	timing << '\n';
-	printLoopClosureTiming(*stage, timing);
-	timing << "  map re-rendered from the optimised graph: " << (pipeline.mapRerendered() ? "yes" : "no") << "\n";
-	if (!timing) throw std::runtime_error(dir + "/timing.txt: cannot append");
+	// timing.txt (written just before) gets the back-end's lines appended; the
+	// whole file is rewritten atomically.
+	std::ifstream before(dir + "/timing.txt");
+	std::ostringstream text;
+	text << before.rdbuf() << '\n';
+	printLoopClosureTiming(*stage, text);
+	text << "  map re-rendered from the optimised graph: " << (pipeline.mapRerendered() ? "yes" : "no") << "\n";
+	common::writeTextFileAtomically(dir + "/timing.txt", text.str());
 }
 
 }  // namespace hslam::slam

@@ -1,3 +1,4 @@
+#include <hslam/common/output_folder.h>
 #include <hslam/common/json_text.h>
 #include <hslam/common/version.h>
 #include <hslam/eval/evaluation_json.h>
@@ -121,9 +122,7 @@ std::string runSummaryToJson(const TRunSummary& s)
 
 void writeRunSummaryJson(const TRunSummary& summary, const std::string& path)
 {
-	std::ofstream f(path);
-	f << runSummaryToJson(summary);
-	if (!f) throw std::runtime_error(path + ": cannot write");
+	common::writeTextFileAtomically(path, runSummaryToJson(summary));
 }
 
 }  // namespace hslam::slam

@@ -1,3 +1,4 @@
+#include <hslam/common/output_folder.h>
 #include <hslam/slam/vision_outputs.h>
 
 #include <filesystem>
@@ -31,9 +32,7 @@ void writeVisionOutputs(const CVisionStage& stage, const std::string& dir, std::
 {
 	if (stage.rows().empty()) return;
 	const std::string path = dir + "/vision.csv";
-	std::ofstream csv(path);
-	writeVisionCsv(stage.rows(), csv);
-	if (!csv) throw std::runtime_error(path + ": cannot write");
+	common::writeStreamAtomically(path, [&stage](std::ostream& csv) { writeVisionCsv(stage.rows(), csv); });
 	written.push_back(path);
 	if (stage.debugImages().empty()) return;
 	std::filesystem::create_directories(dir + "/vision");
@@ -41,9 +40,7 @@ void writeVisionOutputs(const CVisionStage& stage, const std::string& dir, std::
 	{
 		std::ostringstream name;
 		name << dir << "/vision/frame_" << std::setw(6) << std::setfill('0') << frame << ".png";
-		std::ofstream f(name.str(), std::ios::binary);
-		f.write(reinterpret_cast<const char*>(png.data()), static_cast<std::streamsize>(png.size()));
-		if (!f) throw std::runtime_error(name.str() + ": cannot write");
+		common::writeTextFileAtomically(name.str(), std::string(png.begin(), png.end()));
 		written.push_back(name.str());
 	}
 }

@@ -16,6 +16,7 @@
 #pragma once
 
 #include <functional>
+#include <iosfwd>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -66,5 +67,8 @@ void writeFileAtomically(const std::string& path, const std::function<void(const
 
 /** writeFileAtomically() for text; checks every byte reached the disk. */
 void writeTextFileAtomically(const std::string& path, const std::string& text);
+
+/** writeTextFileAtomically() of what `writer` puts into a stream. */
+void writeStreamAtomically(const std::string& path, const std::function<void(std::ostream&)>& writer);
 
 }  // namespace hslam::common
