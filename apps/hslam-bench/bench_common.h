@@ -90,9 +90,6 @@ mrpt::maps::COccupancyGridMap2D truthMapOnOurCells(const std::string& sampleDir,
 int runGridRangeSuite(const std::string& samplesDir, const std::vector<std::string>& rawlogs,
 					  const std::vector<std::string>& references);
 
-/** Every 2D scan of a rawlog (either format), in file order. */
-std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> readScans(const std::string& rawlogPath);
-
 /** The dynamic object filter on simulated samples with walking people and
  * per-beam ground truth (bench_legs_sim.cpp): every folder under dataDir
  * holding sim.rawlog, ground_truth.tum, people.csv.gz, beam_labels.csv.gz. */

@@ -2,6 +2,7 @@
 #include "bench_csv.h"
 
 #include <hslam/io/CGzLineReader.h>
+#include <hslam/io/csv_line.h>
 
 #include <sstream>
 #include <stdexcept>
@@ -14,20 +15,16 @@ std::vector<std::map<std::string, std::string>> readCsv(const std::string& path)
 	io::CGzLineReader in(path);
 	std::string line;
 	if (!in.nextLine(line)) throw std::runtime_error(path + ": empty file");
-	std::vector<std::string> header;
-	std::stringstream hs(line);
-	for (std::string h; std::getline(hs, h, ',');) header.push_back(h);
+	const std::vector<std::string> header = io::splitCsvLine(line);
 	std::vector<std::map<std::string, std::string>> rows;
 	while (in.nextLine(line))
 	{
-		std::stringstream ls(line);
-		std::map<std::string, std::string> row;
-		size_t k = 0;
-		for (std::string f; std::getline(ls, f, ','); ++k)
-			if (k < header.size()) row[header[k]] = f;
-		if (k != header.size())
-			throw std::runtime_error(path + ":" + std::to_string(in.lineNumber()) + ": " + std::to_string(k) +
+		const std::vector<std::string> fields = io::splitCsvLine(line);
+		if (fields.size() != header.size())
+			throw std::runtime_error(path + ":" + std::to_string(in.lineNumber()) + ": " + std::to_string(fields.size()) +
 									 " fields, header has " + std::to_string(header.size()));
+		std::map<std::string, std::string> row;
+		for (size_t k = 0; k < fields.size(); ++k) row[header[k]] = fields[k];
 		rows.push_back(std::move(row));
 	}
 	return rows;

@@ -4,6 +4,7 @@
  * Agreement: cells classified occupied / free / unknown, compared over the
  * cells known in either map. Memory: our tiles vs MRPT's one rectangle. */
 #include "bench_common.h"
+#include "bench_report.h"
 
 #include <hslam/maps/CLaserGridInserter.h>
 #include <hslam/maps/grid_comparison.h>
@@ -60,24 +61,29 @@ int runGridSuite(const std::vector<std::string>& rawlogs, int repetitions)
 	for (const auto& rawlog : rawlogs) rows.push_back(measure(rawlog, repetitions));
 
 	std::cout << "Suite grid: laser insertion, tiled grid (thesis 4.6) vs MRPT COccupancyGridMap2D, range limit "
-			  << kRangeLimit_m << " m, best of " << repetitions << " runs\n\n"
-			  << std::left << std::setw(58) << "rawlog" << std::right << std::setw(7) << "scans" << std::setw(12)
-			  << "ours us" << std::setw(12) << "MRPT us" << std::setw(9) << "speedup" << std::setw(11) << "agreement"
-			  << std::setw(11) << "ours KiB" << std::setw(11) << "MRPT KiB" << "\n";
+			  << kRangeLimit_m << " m, best of " << repetitions << " runs\n\n";
+	const CReportTable table(std::cout, {{"rawlog", 58, true},
+										 {"scans", 7},
+										 {"ours us", 12},
+										 {"MRPT us", 12},
+										 {"speedup", 9},
+										 {"agreement", 11},
+										 {"ours KiB", 11},
+										 {"MRPT KiB", 11}});
+	table.printHeader();
 	double sumOurs = 0, sumMrpt = 0, sumAgreement = 0;
 	for (const auto& r : rows)
 	{
-		std::cout << std::left << std::setw(58) << r.name.substr(0, 57) << std::right << std::setw(7) << r.scans
-				  << std::fixed << std::setprecision(1) << std::setw(12) << r.ours_us << std::setw(12) << r.mrpt_us
-				  << std::setprecision(2) << std::setw(9) << r.mrpt_us / r.ours_us << std::setprecision(4)
-				  << std::setw(11) << r.agreement << std::setw(11) << r.ours_bytes / 1024 << std::setw(11)
-				  << r.mrpt_bytes / 1024 << "\n";
+		table.printRow({r.name.substr(0, 57), std::to_string(r.scans), fixed(r.ours_us, 1), fixed(r.mrpt_us, 1),
+						fixed(r.mrpt_us / r.ours_us, 2), fixed(r.agreement, 4), std::to_string(r.ours_bytes / 1024),
+						std::to_string(r.mrpt_bytes / 1024)});
 		sumOurs += r.ours_us * r.scans;
 		sumMrpt += r.mrpt_us * r.scans;
 		sumAgreement += r.agreement;
 	}
-	std::cout << std::defaultfloat << std::setprecision(6) << "\ngrid_insert_speedup_vs_mrpt=" << sumMrpt / sumOurs
-			  << "\ngrid_cell_agreement_vs_mrpt=" << sumAgreement / static_cast<double>(rows.size()) << "\n";
+	std::cout << "\n";
+	CKeyValueLines(std::cout)("grid_insert_speedup_vs_mrpt", sumMrpt / sumOurs)(
+		"grid_cell_agreement_vs_mrpt", sumAgreement / static_cast<double>(rows.size()));
 	return 0;
 }
 

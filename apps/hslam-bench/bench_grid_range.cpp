@@ -13,6 +13,7 @@
  * ours knows correctly (coverage that is right) and wrongly, and walls found
  * (reference-occupied cells ours marks occupied). */
 #include "bench_common.h"
+#include "bench_report.h"
 
 #include <hslam/common/config_overrides.h>
 #include <hslam/common/options_io.h>
@@ -75,19 +76,21 @@ maps::CTiledOccupancyGrid referenceGrid(const TRangeRun& run, const common::TTra
 	return grid;
 }
 
-void printRow(const std::string& input, double range_m, const maps::TCellAgreement& a)
+CReportTable rangeTable()
 {
-	std::cout << std::left << std::setw(14) << input << std::right << std::fixed << std::setprecision(0)
-			  << std::setw(8) << range_m << std::setprecision(4) << std::setw(11) << a.fraction() << std::setw(14)
-			  << a.fractionOfOursKnown() << std::setw(10) << a.agreed << std::setw(10) << a.ours_known - a.agreed
-			  << std::setprecision(3) << std::setw(8) << a.occupiedFound() << "\n";
+	return CReportTable(std::cout, {{"input", 14, true},
+									{"range m", 8},
+									{"agreement", 11},
+									{"agree(known)", 14},
+									{"right", 10},
+									{"wrong", 10},
+									{"walls", 8}});
 }
 
-void printHeader()
+void printRow(const CReportTable& table, const std::string& input, double range_m, const maps::TCellAgreement& a)
 {
-	std::cout << std::left << std::setw(14) << "input" << std::right << std::setw(8) << "range m" << std::setw(11)
-			  << "agreement" << std::setw(14) << "agree(known)" << std::setw(10) << "right" << std::setw(10)
-			  << "wrong" << std::setw(8) << "walls" << "\n";
+	table.printRow({input, fixed(range_m, 0), fixed(a.fraction(), 4), fixed(a.fractionOfOursKnown(), 4),
+					std::to_string(a.agreed), std::to_string(a.ours_known - a.agreed), fixed(a.occupiedFound(), 3)});
 }
 }  // namespace
 
@@ -97,14 +100,15 @@ int runGridRangeSuite(const std::string& samplesDir, const std::vector<std::stri
 	if (rawlogs.size() != references.size())
 		throw std::runtime_error("grid-range: give one -g REFERENCE.tum per -r RAWLOG");
 	std::cout << "Grid range ([laser_model] max_range_m) against reference maps, default pipeline, 0.1 m cells\n";
-	printHeader();
+	const CReportTable table = rangeTable();
+	table.printHeader();
 	for (const std::string sample : {"lab", "corridor", "floor"})
 		for (const double r : kRanges_m)
 		{
 			const std::string dir = samplesDir + "/" + sample;
 			const TRangeRun run = runAtRange(dir + "/sim.rawlog", r);
 			const auto cells = run.pipeline->grid().observedBounds();
-			printRow(sample, r, maps::compareWithMrptGrid(run.pipeline->grid(), truthMapOnOurCells(dir, *run.pipeline, cells)));
+			printRow(table, sample, r, maps::compareWithMrptGrid(run.pipeline->grid(), truthMapOnOurCells(dir, *run.pipeline, cells)));
 		}
 	for (size_t i = 0; i < rawlogs.size(); ++i)
 		for (const double r : kRanges_m)
@@ -114,7 +118,7 @@ int runGridRangeSuite(const std::string& samplesDir, const std::vector<std::stri
 			auto cells = run.pipeline->grid().observedBounds();
 			cells.include(reference.observedBounds());
 			const std::string name = rawlogs[i].substr(rawlogs[i].find_last_of('/') + 1);
-			printRow(name.substr(0, 13), r,
+			printRow(table, name.substr(0, 13), r,
 					 maps::compareWithMrptGrid(run.pipeline->grid(), maps::toMrptGrid(reference, cells)));
 		}
 	return 0;

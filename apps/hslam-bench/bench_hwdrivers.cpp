@@ -24,6 +24,7 @@
 #include <random>
 
 #include "bench_common.h"
+#include "bench_report.h"
 
 namespace hslam::bench
 {
@@ -74,14 +75,11 @@ void writeIni(const std::string& path, const std::string& dir)
 				 dir.c_str(), dir.c_str(), dir.c_str());
 	std::fclose(f);
 }
-}  // namespace
-
-int runHwdriversSuite(int repetitions)
+/** A synthetic ARCOS stream: nSips SIPs with 8 sonars each, 5 % followed by garbage bytes. */
+std::vector<uint8_t> syntheticSipStream(int nSips)
 {
-	// 1. Parser throughput.
 	std::vector<uint8_t> stream;
 	std::mt19937 rng(3);
-	const int nSips = 20000;
 	for (int k = 0; k < nSips; ++k)
 	{
 		arcos::TSip s;
@@ -94,12 +92,26 @@ int runHwdriversSuite(int repetitions)
 		if (rng() % 20 == 0)
 			for (int g = 0; g < 10; ++g) stream.push_back(static_cast<uint8_t>(rng()));
 	}
+	return stream;
+}
+
+/** 1. Parser throughput: SIPs decoded, and the best time (s) to decode them in 64-byte reads. */
+struct TParserThroughput
+{
 	size_t decoded = 0;
-	const double tParse = bestTimeOf(repetitions, [&] {
+	double best_s = 0;
+	double sipsPerS() const { return decoded / best_s; }
+};
+
+TParserThroughput measureParser(int repetitions)
+{
+	const std::vector<uint8_t> stream = syntheticSipStream(20000);
+	TParserThroughput r;
+	r.best_s = bestTimeOf(repetitions, [&] {
 		arcos::CArcosPacketParser parser;
 		CArcosOdometry odo;
 		std::vector<uint8_t> payload;
-		decoded = 0;
+		r.decoded = 0;
 		for (size_t i = 0; i < stream.size(); i += 64)
 		{
 			parser.feed(&stream[i], std::min<size_t>(64, stream.size() - i));
@@ -107,15 +119,25 @@ int runHwdriversSuite(int repetitions)
 				if (auto s = arcos::decodeSip(payload))
 				{
 					odo.update(*s);
-					++decoded;
+					++r.decoded;
 				}
 		}
 	});
-	const double sipsPerS = decoded / tParse;
+	return r;
+}
 
-	// 2. Driver over a pty at 10x the native SIP rate.
-	const std::string dir = std::filesystem::temp_directory_path() / ("hslam_bench_hw_" + std::to_string(getpid()));
-	std::filesystem::create_directories(dir);
+/** 2. The driver over a pty against the in-process emulator. */
+struct TDriverLoad
+{
+	uint64_t sent = 0;
+	size_t received = 0;
+	double wall_s = 0, cpu_s = 0;  //!< driver thread CPU
+	double cpuPercent() const { return 100.0 * cpu_s / wall_s; }
+};
+
+/** The driver for 3 s against the emulator sending a SIP every 10 ms (10x the native rate). */
+TDriverLoad measureDriverOverPty(const std::string& dir)
+{
 	CArcosEmulator::TOptions eo;
 	eo.pty_link = dir + "/pioneer_inproc";
 	eo.sip_period_s = 0.01;
@@ -129,88 +151,117 @@ int runHwdriversSuite(int repetitions)
 	const auto sent0 = emu.stats().sipsSent;
 	const double cpu0 = rusageSeconds(RUSAGE_THREAD);
 	const auto t0 = std::chrono::steady_clock::now();
-	size_t received = 0;
+	TDriverLoad r;
 	while (std::chrono::steady_clock::now() - t0 < std::chrono::seconds(3))
 	{
 		drv.setVelocity(0.2, 0.1);
-		received += drv.spinOnce(0.02).size();
+		r.received += drv.spinOnce(0.02).size();
 	}
 	drv.stop();
-	const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-	const double drvCpu = rusageSeconds(RUSAGE_THREAD) - cpu0;
-	const auto sent = emu.stats().sipsSent - sent0;
+	r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+	r.cpu_s = rusageSeconds(RUSAGE_THREAD) - cpu0;
+	r.sent = emu.stats().sipsSent - sent0;
 	drv.disconnect();
 	emu.stop();
+	return r;
+}
 
-	// 3. Full recordings (emulators as a separate process).
-	const std::string bin = exeDir();
-	const std::string ini = dir + "/grab.ini";
+/** 3. One recorder's run: its CPU (children's rusage), wall time and what the rawlog holds. */
+struct TRecording
+{
+	std::string name;
+	double cpu_s = 0, wall_s = 0, span_s = 0;
+	std::map<std::string, size_t> labels;
+	double observationsPerS() const
+	{
+		size_t total = 0;
+		for (const auto& [l, n] : labels) total += n;
+		return total / std::max(span_s, 1e-9);
+	}
+	double rate_hz(const char* label) const { return labels.count(label) && span_s > 0 ? labels.at(label) / span_s : 0.0; }
+	/** Key prefix of the key=value lines. */
+	std::string key() const { return name == "hslam-grabber" ? "hslam_grabber" : "mrpt_grabber"; }
+};
+
+/** The rawlog a recorder wrote: ours at `ours`, rawlog-grabber's named mrpt_*.rawlog in dir. */
+std::string recordedRawlog(const std::string& recorder, const std::string& dir, const std::string& ours)
+{
+	if (recorder == "hslam-grabber") return ours;
+	std::string rawlog = ours;
+	for (const auto& e : std::filesystem::directory_iterator(dir))
+		if (e.path().filename().string().rfind("mrpt_", 0) == 0 && e.path().extension() == ".rawlog")
+			rawlog = e.path().string();
+	return rawlog;
+}
+
+/** hslam-grabber or MRPT's rawlog-grabber (with our plug-in) recording 6 s from
+ * hslam-device-emulator run as a separate process (SIPs at 100 Hz, LMS200 at 75 Hz). */
+TRecording recordWith(const std::string& recorder, const std::string& dir)
+{
+	const std::string bin = exeDir(), ini = dir + "/grab.ini";
 	writeIni(ini, dir);
 	const std::string emuCmd = bin + "/hslam-device-emulator --pioneer-pty " + dir + "/pioneer --lms200-pty " + dir +
 							   "/lms --sip-period 0.01 --lms200-rate 75 --duration 9 > " + dir + "/emu.log 2>&1 &";
-	struct TRun
-	{
-		std::string name;
-		double cpu_s = 0, wall_s = 0, span_s = 0;
-		std::map<std::string, size_t> labels;
-	};
-	std::vector<TRun> runs;
-	for (const std::string which : {"hslam-grabber", "rawlog-grabber"})
-	{
-		if (std::system(emuCmd.c_str()) != 0) throw std::runtime_error("cannot start hslam-device-emulator");
-		usleep(500000);
-		TRun r;
-		r.name = which;
-		const std::string out = dir + "/ours.rawlog";
-		const std::string cmd =
-			which == "hslam-grabber"
-				? bin + "/hslam-grabber " + ini + " --duration 6 -o " + out + " > " + dir + "/g.log 2>&1"
-				: "(sleep 6; echo q) | rawlog-grabber -p " + bin + "/../lib/libhslam-hwdrivers-plugin.so " + ini + " > " +
-					  dir + "/m.log 2>&1";
-		const double c0 = rusageSeconds(RUSAGE_CHILDREN);
-		const auto w0 = std::chrono::steady_clock::now();
-		if (std::system(cmd.c_str()) != 0) std::cerr << which << " returned non-zero\n";
-		r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();
-		r.cpu_s = rusageSeconds(RUSAGE_CHILDREN) - c0;
-		std::string rawlog = out;
-		if (which != "hslam-grabber")
-			for (const auto& e : std::filesystem::directory_iterator(dir))
-				if (e.path().filename().string().rfind("mrpt_", 0) == 0 && e.path().extension() == ".rawlog")
-					rawlog = e.path().string();
-		r.labels = countLabels(rawlog, r.span_s);
-		runs.push_back(r);
-		sleep(3);  // the emulator ends (--duration 9)
-	}
-	std::filesystem::remove_all(dir);
+	if (std::system(emuCmd.c_str()) != 0) throw std::runtime_error("cannot start hslam-device-emulator");
+	usleep(500000);
+	TRecording r;
+	r.name = recorder;
+	const std::string out = dir + "/ours.rawlog";
+	const std::string cmd =
+		recorder == "hslam-grabber"
+			? bin + "/hslam-grabber " + ini + " --duration 6 -o " + out + " > " + dir + "/g.log 2>&1"
+			: "(sleep 6; echo q) | rawlog-grabber -p " + bin + "/../lib/libhslam-hwdrivers-plugin.so " + ini + " > " +
+				  dir + "/m.log 2>&1";
+	const double c0 = rusageSeconds(RUSAGE_CHILDREN);
+	const auto w0 = std::chrono::steady_clock::now();
+	if (std::system(cmd.c_str()) != 0) std::cerr << recorder << " returned non-zero\n";
+	r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - w0).count();
+	r.cpu_s = rusageSeconds(RUSAGE_CHILDREN) - c0;
+	r.labels = countLabels(recordedRawlog(recorder, dir, out), r.span_s);
+	sleep(3);  // the emulator ends (--duration 9)
+	return r;
+}
 
-	std::cout << std::fixed << std::setprecision(2);
-	std::cout << "ARCOS parser + SIP decoder: " << decoded << " SIPs (8 sonars, 5% garbage) in " << tParse * 1e3
-			  << " ms = " << sipsPerS / 1e3 << " kSIP/s (" << sipsPerS / 10.0 << "x the native 10 SIP/s)\n";
-	std::cout << "Driver over pty, SIP every 10 ms (10x native): sent " << sent << ", received " << received << " in "
-			  << wall << " s, driver thread CPU " << 100.0 * drvCpu / wall << " % of one core\n";
+void printHwdriversReport(const TParserThroughput& parser, const TDriverLoad& driver, const std::vector<TRecording>& runs)
+{
+	const double sipsPerS = parser.sipsPerS();
+	std::cout << "ARCOS parser + SIP decoder: " << parser.decoded << " SIPs (8 sonars, 5% garbage) in "
+			  << fixed(parser.best_s * 1e3, 2) << " ms = " << fixed(sipsPerS / 1e3, 2) << " kSIP/s ("
+			  << fixed(sipsPerS / 10.0, 2) << "x the native 10 SIP/s)\n";
+	std::cout << "Driver over pty, SIP every 10 ms (10x native): sent " << driver.sent << ", received " << driver.received
+			  << " in " << fixed(driver.wall_s, 2) << " s, driver thread CPU " << fixed(driver.cpuPercent(), 2)
+			  << " % of one core\n";
 	std::cout << "Recording (Pioneer SIPs at 100 Hz + LMS200 361 beams at 75 Hz):\n";
-	std::cout << "  recorder          wall s   CPU %   obs/s   ODOMETRY Hz   LASER Hz\n";
+	const CReportTable table(std::cout, {{"  recorder", 18, true},
+										 {"wall s", 8},
+										 {"CPU %", 8},
+										 {"obs/s", 8},
+										 {"ODOMETRY Hz", 14},
+										 {"LASER Hz", 11}});
+	table.printHeader();
 	for (const auto& r : runs)
-	{
-		size_t total = 0;
-		for (const auto& [l, n] : r.labels) total += n;
-		const auto rate = [&](const char* l) { return r.labels.count(l) && r.span_s > 0 ? r.labels.at(l) / r.span_s : 0.0; };
-		std::cout << "  " << std::setw(16) << std::left << r.name << std::right << std::setw(8) << r.wall_s
-				  << std::setw(8) << 100.0 * r.cpu_s / r.wall_s << std::setw(8) << total / std::max(r.span_s, 1e-9)
-				  << std::setw(14) << rate("ODOMETRY") << std::setw(11) << rate("LASER") << "\n";
-	}
-	std::cout << "parser_sips_per_s=" << sipsPerS << "\ndriver_sips_sent=" << sent << "\ndriver_sips_received=" << received
-			  << "\ndriver_cpu_percent=" << 100.0 * drvCpu / wall << "\n";
+		table.printRow({"  " + r.name, fixed(r.wall_s, 2), fixed(100.0 * r.cpu_s / r.wall_s, 2),
+						fixed(r.observationsPerS(), 2), fixed(r.rate_hz("ODOMETRY"), 2), fixed(r.rate_hz("LASER"), 2)});
+	CKeyValueLines keys(std::cout);
+	keys("parser_sips_per_s", fixed(sipsPerS, 2))("driver_sips_sent", driver.sent)(
+		"driver_sips_received", driver.received)("driver_cpu_percent", fixed(driver.cpuPercent(), 2));
 	for (const auto& r : runs)
-	{
-		const std::string k = r.name == "hslam-grabber" ? "hslam_grabber" : "mrpt_grabber";
-		double total = 0;
-		for (const auto& [l, n] : r.labels) total += n;
-		std::cout << k << "_cpu_percent=" << 100.0 * r.cpu_s / r.wall_s << "\n"
-				  << k << "_obs_per_s=" << total / std::max(r.span_s, 1e-9) << "\n"
-				  << k << "_odometry_hz=" << (r.labels.count("ODOMETRY") ? r.labels.at("ODOMETRY") / r.span_s : 0) << "\n"
-				  << k << "_laser_hz=" << (r.labels.count("LASER") ? r.labels.at("LASER") / r.span_s : 0) << "\n";
-	}
+		keys(r.key() + "_cpu_percent", fixed(100.0 * r.cpu_s / r.wall_s, 2))(
+			r.key() + "_obs_per_s", fixed(r.observationsPerS(), 2))(r.key() + "_odometry_hz", fixed(r.rate_hz("ODOMETRY"), 2))(
+			r.key() + "_laser_hz", fixed(r.rate_hz("LASER"), 2));
+}
+}  // namespace
+
+int runHwdriversSuite(int repetitions)
+{
+	const TParserThroughput parser = measureParser(repetitions);
+	const std::string dir = std::filesystem::temp_directory_path() / ("hslam_bench_hw_" + std::to_string(getpid()));
+	std::filesystem::create_directories(dir);
+	const TDriverLoad driver = measureDriverOverPty(dir);
+	std::vector<TRecording> runs;
+	for (const std::string recorder : {"hslam-grabber", "rawlog-grabber"}) runs.push_back(recordWith(recorder, dir));
+	std::filesystem::remove_all(dir);
+	printHwdriversReport(parser, driver, runs);
 	return 0;
 }
 

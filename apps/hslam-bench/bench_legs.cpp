@@ -23,6 +23,7 @@
 #include <hslam/dynamic/leg_scoring.h>
 #include <hslam/dynamic/leg_training.h>
 #include <hslam/dynamic/occupied_cells.h>
+#include <hslam/io/rawlog_scans.h>
 #include <hslam/maps/CLaserGridInserter.h>
 #include <hslam/maps/grid_rendering.h>
 #include <hslam/matching/icp_odometry.h>
@@ -40,11 +41,6 @@
 
 namespace hslam::bench
 {
-std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> readScans(const std::string& path)
-{
-	return dynamic::readRangeScans(path);
-}
-
 namespace
 {
 using mrpt::obs::CObservation2DRangeScan;
@@ -114,7 +110,7 @@ CObservation2DRangeScan medianScan(const std::vector<CObservation2DRangeScan::Pt
 TTrailResult trailOnStaticLog(const dynamic::CDynamicObjectFilter::TOptions& options, const TClassifierPtr& classifier,
 							  const std::string& rawlog, const std::string& pngPath)
 {
-	const auto scans = readScans(rawlog);
+	const auto scans = io::readRangeScans(rawlog);
 	if (scans.empty()) throw std::runtime_error(rawlog + ": no 2D scans");
 	maps::CLaserGridInserter::TOptions laser;
 	laser.max_range_m = 5.5;  // the demo laser reaches 5.6 m

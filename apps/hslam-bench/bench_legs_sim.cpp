@@ -23,6 +23,7 @@
 #include <hslam/dynamic/dynamic_profiles.h>
 #include <hslam/dynamic/occupied_cells.h>
 #include <hslam/io/CGzLineReader.h>
+#include <hslam/io/rawlog_scans.h>
 #include <hslam/maps/CLaserGridInserter.h>
 #include <hslam/maps/grid_rendering.h>
 #include <hslam/slam/CDynamicMappingStage.h>
@@ -181,7 +182,7 @@ size_t peopleOnlyOccupiedCells(const maps::CTiledOccupancyGrid& g, const THitCel
 std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> readSampleScans(const fs::path& dir, common::TTrajectory2D& truth)
 {
 	std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> scans;
-	for (const auto& s : readScans((dir / "sim.rawlog").string()))
+	for (const auto& s : io::readRangeScans((dir / "sim.rawlog").string()))
 		if (s->sensorLabel == "LASER") scans.push_back(s);
 	truth = common::readTumFile((dir / "ground_truth.tum").string());
 	if (truth.size() != scans.size())

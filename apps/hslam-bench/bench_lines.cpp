@@ -16,6 +16,7 @@
  * The extra row "deriv-thesis" runs the derivative method with the thesis'
  * own settings where ours deviate (see CDerivativeLineExtractor.h). */
 #include "bench_common.h"
+#include "bench_report.h"
 
 #include <hslam/common/options_io.h>
 #include <hslam/common/tum_trajectory.h>
@@ -275,87 +276,118 @@ std::vector<std::string> defaultLogs()
 	for (const char* name : {"intel", "aces", "csail"}) logs.push_back(dir + "/" + name + "-corrected.log.gz");
 	return logs;
 }
+/** Per method: synthetic scores pooled over the scenes, and mean time per scan. */
+struct TSyntheticTotals
+{
+	std::map<std::string, features::TLineScore> pooled;
+	std::map<std::string, double> us_per_scan;
+};
+
+TSyntheticTotals printSyntheticTable(const std::vector<TSyntheticRow>& rows, int repetitions)
+{
+	std::cout << "Suite lines: line extraction, thesis table 3 environments (" << kTrials
+			  << " noisy views each, sigma " << kSigma_m * 100 << " cm, noisy wall " << kNoisySigma_m * 100
+			  << " cm), best of " << repetitions << " runs\n"
+			  << "found = true wall matched within 5 cm / 3 deg with >= 50 % overlap (one-to-one); FP = unmatched "
+				 "extracted segment\n\n";
+	const CReportTable table(std::cout, {{"scene", 9, true},
+										 {"method", 12, true},
+										 {"found/scan", 12},
+										 {"FP/scan", 9},
+										 {"recall", 8},
+										 {"precision", 10},
+										 {"F1", 7},
+										 {"endpt mm", 12},
+										 {"us/scan", 10}});
+	table.printHeader();
+	TSyntheticTotals totals;
+	for (const auto& r : rows)
+	{
+		const double n = kTrials;
+		table.printRow({r.scene, r.method, fixed(r.total.found / n, 2) + "/" + fixed(r.total.truth / n, 0),
+						fixed(r.total.false_positives / n, 2), fixed(r.total.recall(), 3), fixed(r.total.precision(), 3),
+						fixed(r.total.f1(), 3), fixed(1000 * r.total.meanEndpointError_m(), 1), fixed(r.us_per_scan, 1)});
+		accumulate(totals.pooled[r.method], r.total);
+		totals.us_per_scan[r.method] += r.us_per_scan / 3;
+	}
+	return totals;
+}
+
+/** Per method on the real logs: time per scan pooled over scans, and repeatability. */
+struct TRealTotals
+{
+	std::map<std::string, std::pair<double, size_t>> us;  //!< sum of us, scans
+	std::map<std::string, TRepeatability> repeat;
+};
+
+void printRealRow(const CReportTable& table, const TRealRow& r)
+{
+	const auto ratio = [](size_t a, size_t b) { return static_cast<double>(a) / std::max<size_t>(1, b); };
+	table.printRow({r.log.substr(0, 23), r.method, std::to_string(r.scans), fixed(ratio(r.lines, r.scans), 2),
+					fixed(ratio(r.linePoints, r.validPoints), 3), fixed(1000 * r.sumRms_m / std::max<size_t>(1, r.lines), 1),
+					fixed(ratio(r.occludedEnds, r.ends), 2), fixed(ratio(r.repeat.partnered, r.repeat.lines), 2),
+					fixed(1000 * median(r.repeat.endErrorReal_m), 0) + "/" + fixed(1000 * median(r.repeat.endErrorOccluded_m), 0),
+					fixed(r.us_per_scan, 1)});
+}
+
+TRealTotals printRealTable(const std::vector<TRealRow>& rows)
+{
+	TRealTotals totals;
+	if (rows.empty()) return totals;
+	std::cout << "\nReal scans (no ground-truth lines): lines per scan; covered = share of valid points on a line;\n"
+				 "rms = mean fit RMS; occl = share of line ends flagged occluded; repeat = share of lines >= 1 m\n"
+				 "with a partner in the previous scan moved by the reference poses (10 cm, 3 deg, overlapping);\n"
+				 "end mm = median along-line distance of partnered ends, real (neither flagged) / occluded\n\n";
+	const CReportTable table(std::cout, {{"log", 24, true},
+										 {"method", 11, true},
+										 {"scans", 6},
+										 {"lines/scan", 11},
+										 {"covered", 9},
+										 {"rms mm", 8},
+										 {"occl", 7},
+										 {"repeat", 8},
+										 {"end mm r/o", 14},
+										 {"us/scan", 10}});
+	table.printHeader();
+	for (const auto& r : rows)
+	{
+		printRealRow(table, r);
+		auto& pooledRepeat = totals.repeat[r.method];
+		pooledRepeat.lines += r.repeat.lines;
+		pooledRepeat.partnered += r.repeat.partnered;
+		totals.us[r.method].first += r.us_per_scan * static_cast<double>(r.scans);
+		totals.us[r.method].second += r.scans;
+	}
+	return totals;
+}
+
+void printLinesKeys(TSyntheticTotals& synthetic, TRealTotals& real)
+{
+	std::cout << "\n";
+	CKeyValueLines keys(std::cout);
+	for (const auto& m : features::lineExtractorMethods())
+	{
+		const auto& p = synthetic.pooled[m];
+		keys("lines_f1_" + m, p.f1())("lines_recall_" + m, p.recall())(
+			"lines_fp_per_scan_" + m, p.false_positives / (3.0 * kTrials))(
+			"lines_endpoint_mm_" + m, 1000 * p.meanEndpointError_m())(
+			"lines_us_per_scan_synthetic_" + m, synthetic.us_per_scan[m]);
+		const auto& ru = real.us[m];
+		// real scans when there are any (the representative case), else synthetic
+		keys("lines_us_per_scan_" + m, ru.second ? ru.first / ru.second : synthetic.us_per_scan[m]);
+		if (real.repeat[m].lines)
+			keys("lines_real_repeatability_" + m, static_cast<double>(real.repeat[m].partnered) / real.repeat[m].lines);
+	}
+}
 }  // namespace
 
 int runLinesSuite(const std::vector<std::string>& inputs, int repetitions)
 {
 	const auto extractors = benchExtractors();
-	const auto synthetic = runSynthetic(extractors, repetitions);
-	std::cout << "Suite lines: line extraction, thesis table 3 environments (" << kTrials
-			  << " noisy views each, sigma " << kSigma_m * 100 << " cm, noisy wall " << kNoisySigma_m * 100
-			  << " cm), best of " << repetitions << " runs\n"
-			  << "found = true wall matched within 5 cm / 3 deg with >= 50 % overlap (one-to-one); FP = unmatched "
-				 "extracted segment\n\n"
-			  << std::left << std::setw(9) << "scene" << std::setw(12) << "method" << std::right << std::setw(12)
-			  << "found/scan" << std::setw(9) << "FP/scan" << std::setw(8) << "recall" << std::setw(10) << "precision"
-			  << std::setw(7) << "F1" << std::setw(12) << "endpt mm" << std::setw(10) << "us/scan" << "\n";
-	std::map<std::string, features::TLineScore> pooled;
-	std::map<std::string, double> synthUs;
-	for (const auto& r : synthetic)
-	{
-		const double n = kTrials;
-		std::ostringstream found;
-		found << std::fixed << std::setprecision(2) << r.total.found / n << "/" << std::setprecision(0)
-			  << r.total.truth / n;
-		std::cout << std::left << std::setw(9) << r.scene << std::setw(12) << r.method << std::right << std::setw(12)
-				  << found.str() << std::fixed << std::setprecision(2) << std::setw(9)
-				  << r.total.false_positives / n << std::setprecision(3) << std::setw(8) << r.total.recall()
-				  << std::setw(10) << r.total.precision() << std::setw(7) << r.total.f1() << std::setprecision(1)
-				  << std::setw(12) << 1000 * r.total.meanEndpointError_m() << std::setw(10) << r.us_per_scan << "\n";
-		accumulate(pooled[r.method], r.total);
-		synthUs[r.method] += r.us_per_scan / 3;
-	}
-
-	std::vector<std::string> logs = inputs.empty() ? defaultLogs() : inputs;
-	const auto real = runReal(extractors, logs, repetitions);
-	std::map<std::string, std::pair<double, size_t>> realUs;  // sum of us, scans
-	std::map<std::string, TRepeatability> realRepeat;
-	if (!real.empty())
-	{
-		std::cout << "\nReal scans (no ground-truth lines): lines per scan; covered = share of valid points on a line;\n"
-					 "rms = mean fit RMS; occl = share of line ends flagged occluded; repeat = share of lines >= 1 m\n"
-					 "with a partner in the previous scan moved by the reference poses (10 cm, 3 deg, overlapping);\n"
-					 "end mm = median along-line distance of partnered ends, real (neither flagged) / occluded\n\n"
-				  << std::left << std::setw(24) << "log" << std::setw(11) << "method" << std::right << std::setw(6)
-				  << "scans" << std::setw(11) << "lines/scan" << std::setw(9) << "covered" << std::setw(8) << "rms mm"
-				  << std::setw(7) << "occl" << std::setw(8) << "repeat" << std::setw(14) << "end mm r/o" << std::setw(10)
-				  << "us/scan" << "\n";
-		for (const auto& r : real)
-		{
-			std::ostringstream ends;
-			ends << std::fixed << std::setprecision(0) << 1000 * median(r.repeat.endErrorReal_m) << "/"
-				 << 1000 * median(r.repeat.endErrorOccluded_m);
-			std::cout << std::left << std::setw(24) << r.log.substr(0, 23) << std::setw(11) << r.method << std::right
-					  << std::setw(6) << r.scans << std::fixed << std::setprecision(2) << std::setw(11)
-					  << static_cast<double>(r.lines) / std::max<size_t>(1, r.scans) << std::setprecision(3)
-					  << std::setw(9) << static_cast<double>(r.linePoints) / std::max<size_t>(1, r.validPoints)
-					  << std::setprecision(1) << std::setw(8) << 1000 * r.sumRms_m / std::max<size_t>(1, r.lines)
-					  << std::setprecision(2) << std::setw(7)
-					  << static_cast<double>(r.occludedEnds) / std::max<size_t>(1, r.ends) << std::setw(8)
-					  << static_cast<double>(r.repeat.partnered) / std::max<size_t>(1, r.repeat.lines) << std::setw(14)
-					  << ends.str() << std::setprecision(1) << std::setw(10) << r.us_per_scan << "\n";
-			auto& pooledRepeat = realRepeat[r.method];
-			pooledRepeat.lines += r.repeat.lines;
-			pooledRepeat.partnered += r.repeat.partnered;
-			realUs[r.method].first += r.us_per_scan * static_cast<double>(r.scans);
-			realUs[r.method].second += r.scans;
-		}
-	}
-	std::cout << std::defaultfloat << std::setprecision(6) << "\n";
-	for (const auto& m : features::lineExtractorMethods())
-	{
-		const auto& p = pooled[m];
-		std::cout << "lines_f1_" << m << "=" << p.f1() << "\nlines_recall_" << m << "=" << p.recall()
-				  << "\nlines_fp_per_scan_" << m << "=" << p.false_positives / (3.0 * kTrials) << "\nlines_endpoint_mm_"
-				  << m << "=" << 1000 * p.meanEndpointError_m() << "\nlines_us_per_scan_synthetic_" << m << "="
-				  << synthUs[m] << "\n";
-		const auto& ru = realUs[m];
-		// real scans when there are any (the representative case), else synthetic
-		std::cout << "lines_us_per_scan_" << m << "=" << (ru.second ? ru.first / ru.second : synthUs[m]) << "\n";
-		if (realRepeat[m].lines)
-			std::cout << "lines_real_repeatability_" << m << "="
-					  << static_cast<double>(realRepeat[m].partnered) / realRepeat[m].lines << "\n";
-	}
+	TSyntheticTotals synthetic = printSyntheticTable(runSynthetic(extractors, repetitions), repetitions);
+	const std::vector<std::string> logs = inputs.empty() ? defaultLogs() : inputs;
+	TRealTotals real = printRealTable(runReal(extractors, logs, repetitions));
+	printLinesKeys(synthetic, real);
 	return 0;
 }
 

@@ -11,6 +11,7 @@
  * key=value lines. Progress on stderr. */
 #include <hslam/common/data_paths.h>
 #include <hslam/common/version.h>
+#include <hslam/io/csv_line.h>
 #include <hslam/sim/CMrptReactiveDriver.h>
 #include <hslam/sim/CSubsumptionDriver.h>
 #include <hslam/sim/free_space.h>
@@ -317,12 +318,10 @@ TNavBenchOptions parseOptions(int argc, char** argv, bool& help)
 	// One cache folder per PTG set (MRPT names its grid files by PTG index only).
 	o.ptg_cache_dir += std::string(o.mrpt_reverse ? "/all-ptgs" : "/forward-ptgs") +
 					   (o.mrpt_max_speed_mps > 0 ? mrpt::format("-v%.2f", o.mrpt_max_speed_mps) : std::string());
-	std::stringstream ws(worlds.getValue());
-	for (std::string w; std::getline(ws, w, ',');)
+	for (const auto& w : io::splitCsvLine(worlds.getValue()))
 		if (!w.empty()) o.worlds.push_back(w);
 	o.methods.clear();
-	std::stringstream ss(methods.getValue());
-	for (std::string m; std::getline(ss, m, ',');)
+	for (const auto& m : io::splitCsvLine(methods.getValue()))
 	{
 		if (m.empty()) continue;
 		if (m != "ours") holonomicMethod(m);  // throws on an unknown name

@@ -25,6 +25,7 @@
  * diffract sound back from any direction (the point reflectors TBF relies
  * on), the simulator's planes are purely specular. Images go to outDir. */
 #include "bench_common.h"
+#include "bench_report.h"
 
 #include <hslam/maps/CSonarGridInserter.h>
 #include <hslam/maps/grid_comparison.h>
@@ -376,6 +377,273 @@ const char* kOfficePath = "4 1; 4 3.5; 8.5 3.3; 8.5 6; 4.5 6.2; 4 4.2; 1 4.2; 1 
 const char* kCorridorScene = R"(polyline 0 0 4 0 4 -1 5.5 -1 5.5 0 12 0 12 -3 16 -3 16 4 12 4 12 2 9 2 9 3 7.5 3 7.5 2 0 2
 )";
 const char* kCorridorPath = "11 1; 14 0.5; 14 2.5; 11 1; 1 1";
+// ------------------------------------------------------------------ 1. sonar models
+/** Times (s) of all the runs' sonar insertions and the pooled map agreement, per model. */
+struct TSonarModelTotals
+{
+	double fast_s = 0, standard_s = 0, whole_tile_s = 0;
+	size_t fast_known = 0, fast_correct = 0, standard_known = 0, standard_correct = 0;
+};
+
+CReportTable sonarMapTable()
+{
+	return CReportTable(std::cout, {{"run", 10, true},
+									{"map", 16, true},
+									{"updates", 8},
+									{"ms/update", 12},
+									{"agreement", 11},
+									{"known", 9},
+									{"false occ", 11},
+									{"walls found", 13}});
+}
+
+void printSonarMapRow(const CReportTable& table, const std::string& run, const std::string& map, size_t updates,
+					  double msPerUpdate, const TTruthScore& s)
+{
+	table.printRow({run, map, std::to_string(updates), fixed(msPerUpdate, 3), fixed(s.agreement(), 4),
+					std::to_string(s.known), std::to_string(s.false_occupied), fixed(s.wallsFound(), 3)});
+}
+
+/** Sonar only: the fast and the standard model (and the standard one over the
+ * whole tile, as the thesis' loop), timed and scored; maps saved into outDir. */
+void measureSonarModels(const TSimRun& run, const TTruth& truth, int repetitions, const CReportTable& table,
+						const std::string& outDir, TSonarModelTotals& totals)
+{
+	const size_t n = run.sonars.size();
+	const maps::CSonarGridInserter fast(sonarOptions("fast", 1.0)), standard(sonarOptions("standard", 1.0));
+	auto wholeTileOptions = sonarOptions("standard", 1.0);
+	wholeTileOptions.standard_scans_whole_tile = true;
+	const maps::CSonarGridInserter standardWholeTile(wholeTileOptions);
+	const auto timeOf = [&](const maps::CSonarGridInserter& inserter) {
+		return bestTimeOf(repetitions, [&] {
+			maps::CTiledOccupancyGrid g;
+			insertSonars(g, run.sonars, inserter);
+		});
+	};
+	const double tFast = timeOf(fast), tStd = timeOf(standard);
+	maps::CTiledOccupancyGrid wholeTileMap, fastMap, stdMap;
+	const double tWhole = bestTimeOf(1, [&] { insertSonars(wholeTileMap, run.sonars, standardWholeTile); });
+	insertSonars(fastMap, run.sonars, fast);
+	insertSonars(stdMap, run.sonars, standard);
+	totals.fast_s += tFast, totals.standard_s += tStd, totals.whole_tile_s += tWhole;
+	const TTruthScore sf = scoreOurs(fastMap, truth), ss = scoreOurs(stdMap, truth);
+	totals.fast_known += sf.known, totals.fast_correct += sf.correct;
+	totals.standard_known += ss.known, totals.standard_correct += ss.correct;
+	printSonarMapRow(table, run.name, "sonar fast", n, 1e3 * tFast / n, sf);
+	printSonarMapRow(table, run.name, "sonar standard", n, 1e3 * tStd / n, ss);
+	printSonarMapRow(table, run.name, "  (whole tile)", n, 1e3 * tWhole / n, scoreOurs(wholeTileMap, truth));
+	saveMap(fastMap, run, outDir + "/" + run.name + "_sonar_fast.png");
+	saveMap(stdMap, run, outDir + "/" + run.name + "_sonar_standard.png");
+}
+
+/** Laser only (thesis laser model, 3 m), fused with the default sonar weight and
+ * with other weights, and fused with the laser clearing along its long beams. */
+void scoreFusedMaps(const TSimRun& run, const TTruth& truth, const CReportTable& table, const std::string& outDir)
+{
+	const size_t n = run.sonars.size(), fusedUpdates = run.scans.size() + n;
+	maps::CLaserGridInserter laser;  // thesis defaults: long beams dropped
+	const auto laserMapWith = [&](maps::CLaserGridInserter& inserter) {
+		maps::CTiledOccupancyGrid g;
+		for (const auto& s : run.scans) inserter.insert(g, s.pose, s.scan);
+		return g;
+	};
+	const maps::CTiledOccupancyGrid laserMap = laserMapWith(laser);
+	printSonarMapRow(table, run.name, "laser", run.scans.size(), 0.0, scoreOurs(laserMap, truth));
+	const maps::CSonarGridInserter fusedSonar;  // defaults: fast, weight 0.1
+	maps::CTiledOccupancyGrid fusedMap = laserMapWith(laser);
+	insertSonars(fusedMap, run.sonars, fusedSonar);
+	printSonarMapRow(table, run.name, "laser+sonar", fusedUpdates, 0.0, scoreOurs(fusedMap, truth));
+	for (const double w : {0.25, 0.5})
+	{
+		maps::CTiledOccupancyGrid g = laserMapWith(laser);
+		insertSonars(g, run.sonars, maps::CSonarGridInserter(sonarOptions("fast", w)));
+		std::ostringstream name;
+		name << "  sonar w=" << w;
+		printSonarMapRow(table, run.name, name.str(), fusedUpdates, 0.0, scoreOurs(g, truth));
+	}
+	// The same with the laser also clearing up to 3 m along its long beams.
+	maps::CLaserGridInserter clearingLaser(ourLaserOptions());
+	maps::CTiledOccupancyGrid fusedClearMap = laserMapWith(clearingLaser);
+	insertSonars(fusedClearMap, run.sonars, fusedSonar);
+	printSonarMapRow(table, run.name, "laser+sonar *", fusedUpdates, 0.0, scoreOurs(fusedClearMap, truth));
+	saveMap(laserMap, run, outDir + "/" + run.name + "_laser.png");
+	saveMap(fusedMap, run, outDir + "/" + run.name + "_fused.png");
+}
+
+// ------------------------------------------------------------------ 2. laser tiled vs MRPT
+struct TLaserComparison
+{
+	std::string run;
+	TTruthScore ours, mrpt;
+	double ours_us = 0, mrpt_us = 0;  //!< insertion time per scan
+};
+
+/** Laser: tiled grid vs MRPT, same scans, comparable settings (bench_common.h). */
+TLaserComparison compareLaserWithMrpt(const TSimRun& run, const TTruth& truth, int repetitions)
+{
+	TLaserComparison lr;
+	lr.run = run.name;
+	maps::CTiledOccupancyGrid ours;
+	insertOurs(ours, run.scans);
+	auto mrptGrid = makeMrptGrid(ours);
+	insertMrpt(mrptGrid, run.scans);
+	lr.ours = scoreOurs(ours, truth);
+	lr.mrpt = scoreMrpt(mrptGrid, ours.geometry(), truth);
+	const double perScan = 1e6 / static_cast<double>(run.scans.size());
+	lr.ours_us = perScan * bestTimeOf(repetitions, [&] {
+		maps::CTiledOccupancyGrid g;
+		insertOurs(g, run.scans);
+	});
+	lr.mrpt_us = perScan * bestTimeOf(repetitions, [&] {
+		auto g = makeMrptGrid(ours);
+		insertMrpt(g, run.scans);
+	});
+	return lr;
+}
+
+/** The pooled laser comparison: agreement of each map, insertion time summed over runs. */
+struct TLaserTotals
+{
+	TTruthScore ours, mrpt;
+	double ours_us = 0, mrpt_us = 0;
+};
+
+TLaserTotals printLaserComparison(const std::vector<TLaserComparison>& rows)
+{
+	std::cout << "\n2. Laser maps, tiled grid vs MRPT COccupancyGridMap2D (same scans, 3 m range), against ground truth\n";
+	const CReportTable table(std::cout, {{"run", 10, true},
+										 {"ours agree", 13},
+										 {"MRPT agree", 13},
+										 {"ours fo", 12},
+										 {"MRPT fo", 12},
+										 {"ours us", 11},
+										 {"MRPT us", 11}});
+	table.printHeader();
+	TLaserTotals t;
+	for (const auto& r : rows)
+	{
+		table.printRow({r.run, fixed(r.ours.agreement(), 4), fixed(r.mrpt.agreement(), 4),
+						std::to_string(r.ours.false_occupied), std::to_string(r.mrpt.false_occupied),
+						fixed(r.ours_us, 1), fixed(r.mrpt_us, 1)});
+		t.ours_us += r.ours_us, t.mrpt_us += r.mrpt_us;
+		t.ours.known += r.ours.known, t.ours.correct += r.ours.correct;
+		t.mrpt.known += r.mrpt.known, t.mrpt.correct += r.mrpt.correct;
+	}
+	return t;
+}
+
+/** Memory of a large sparse run: an L-shaped corridor in a 200 m x 200 m building. */
+struct TSparseMemory
+{
+	size_t tiled_bytes = 0, mrpt_bytes = 0;
+};
+
+TSparseMemory measureSparseMemory()
+{
+	const TSimRun sparse = simulate("sparse", "polyline -95 -81 81 -81 81 95\npolyline -95 -79 79 -79 79 95\n",
+									"80 -80; 80 90", {-92, -80, 0}, 1.0, false);
+	maps::CTiledOccupancyGrid sparseOurs;
+	insertOurs(sparseOurs, sparse.scans);
+	const auto sparseMrpt = makeMrptGrid(sparseOurs);
+	const TSparseMemory m{sparseOurs.memoryBytes(), mrptGridBytes(sparseMrpt)};
+	std::cout << "   sparse L corridor (" << sparse.scans.size() << " scans, 172 m + 170 m): ours " << sparseOurs.tileCount()
+			  << " tiles = " << m.tiled_bytes / 1024 << " KiB, MRPT one rectangle " << sparseMrpt.getSizeX() << "x"
+			  << sparseMrpt.getSizeY() << " = " << m.mrpt_bytes / 1024 << " KiB\n";
+	return m;
+}
+
+// ------------------------------------------------------------------ 3. TBF
+struct TTbfVariant
+{
+	std::string name;
+	bool stability, clustering;
+	double coneFraction;
+};
+
+const std::vector<TTbfVariant> kTbfVariants{{"in-cone only (basic TBF)", false, false, 1.0},
+											{"+ stability 20 deg", true, false, 1.0},
+											{"+ stability + clustering", true, true, 1.0},
+											{"clustering + cone-rim, no stability", false, true, 0.8},
+											{"+ cone-rim rejection (default)", true, true, 0.8}};
+
+/** Scores of the default filters (the last variant), also with a minimum support. */
+struct TTbfDefaultScores
+{
+	TTbfScore all, support4, support8;
+};
+
+CReportTable tbfTable()
+{
+	return CReportTable(std::cout, {{"filters", 34, true}, {"corners", 9}, {"precision", 11}, {"observable", 12}, {"recall", 9}});
+}
+
+void printTbfRow(const CReportTable& table, const std::string& name, const TTbfScore& s)
+{
+	table.printRow({name, std::to_string(s.output), fixed(s.precision(), 3), std::to_string(s.observable), fixed(s.recall(), 3)});
+}
+
+/** One variant's corners on every run, pooled; for the default variant also the
+ * support >= 4 / 8 scores and the corner images in outDir. */
+TTbfScore scoreTbfVariant(const TTbfVariant& v, bool isDefault, const std::vector<TSimRun>& runs,
+						  const sim::CSonarSimulator& ring, const std::string& outDir, TTbfDefaultScores& defaults)
+{
+	TTbfScore total;
+	for (const auto& run : runs)
+	{
+		sonar::CTbfCornerDetector::TOptions o;
+		o.use_stability_filter = v.stability;
+		o.use_clustering = v.clustering;
+		o.cone_fraction = v.coneFraction;
+		const auto tbf = runTbf(run, o);
+		std::vector<TPoint2D> all;
+		for (const auto& c : run.scene.corners) all.push_back(c.point);
+		const auto observable = observableCorners(run, ring);
+		total.add(scoreCorners(tbf.corners(), observable, all));
+		if (!isDefault) continue;
+		defaults.support4.add(scoreCorners(tbf.corners(4), observable, all));
+		defaults.support8.add(scoreCorners(tbf.corners(8), observable, all));
+		maps::CTiledOccupancyGrid probe;
+		saveTbfImage(run, probe.geometry(), groundTruth(run, probe.geometry()), tbf,
+					 outDir + "/" + run.name + "_tbf_corners.png");
+	}
+	return total;
+}
+
+TTbfDefaultScores evaluateTbfVariants(const std::vector<TSimRun>& runs, const sim::CSonarSimulator& ring,
+									  const std::string& outDir)
+{
+	std::cout << "\n3. TBF sonar corners vs true corners (within 0.2 m); observable = in some cone within 3 m, in sight\n";
+	const CReportTable table = tbfTable();
+	table.printHeader();
+	TTbfDefaultScores defaults;
+	for (const auto& v : kTbfVariants)
+	{
+		const bool isDefault = &v == &kTbfVariants.back();
+		const TTbfScore total = scoreTbfVariant(v, isDefault, runs, ring, outDir, defaults);
+		printTbfRow(table, v.name, total);
+		if (isDefault) defaults.all = total;
+	}
+	printTbfRow(table, "default, support >= 4", defaults.support4);
+	printTbfRow(table, "default, support >= 8", defaults.support8);
+	return defaults;
+}
+
+void printSonarKeys(const TLaserTotals& laser, const TSparseMemory& sparse, const TSonarModelTotals& models,
+					size_t sonarUpdates, const TTbfScore& tbf)
+{
+	std::cout << "\n";
+	CKeyValueLines(std::cout)("laser_tiled_vs_mrpt_insert_speedup", laser.mrpt_us / laser.ours_us)(
+		"laser_tiled_truth_agreement", laser.ours.agreement())("laser_mrpt_truth_agreement", laser.mrpt.agreement())(
+		"sparse_run_tiled_bytes", sparse.tiled_bytes)("sparse_run_mrpt_bytes", sparse.mrpt_bytes)(
+		"sonar_fast_ms_per_update", 1e3 * models.fast_s / sonarUpdates)(
+		"sonar_standard_ms_per_update", 1e3 * models.standard_s / sonarUpdates)(
+		"sonar_standard_whole_tile_ms_per_update", 1e3 * models.whole_tile_s / sonarUpdates)(
+		"sonar_fast_vs_whole_tile_standard_speedup", models.whole_tile_s / models.fast_s)(
+		"sonar_fast_vs_standard_speedup", models.standard_s / models.fast_s)(
+		"sonar_fast_cell_agreement", static_cast<double>(models.fast_correct) / models.fast_known)(
+		"sonar_standard_cell_agreement", static_cast<double>(models.standard_correct) / models.standard_known)(
+		"tbf_precision", tbf.precision())("tbf_recall", tbf.recall());
+}
 }  // namespace
 
 int runSonarSuite(int repetitions, const std::string& outDir)
@@ -386,205 +654,29 @@ int runSonarSuite(int repetitions, const std::string& outDir)
 	runs.push_back(simulate("corridor", kCorridorScene, kCorridorPath, {1, 1, 0}, 0.4, true));
 	const sim::CSonarSimulator ring;  // the simulator's ring geometry / cone (defaults)
 
-	// ---------------------------------------------------------- 1. sonar models
 	std::cout << "Suite sonar: thesis sonar models (4.6) and TBF corners (4.3) on simulated runs (true poses), best of "
 			  << repetitions << " runs\n\n";
 	std::cout << "1. Sonar grid models (range limit 3 m, cone " << ring.options().cone_rad * 180 / M_PI
-			  << " deg, 0.1 m cells); agreement with the ground-truth map\n"
-			  << std::left << std::setw(10) << "run" << std::setw(16) << "map" << std::right << std::setw(8) << "updates"
-			  << std::setw(12) << "ms/update" << std::setw(11) << "agreement" << std::setw(9) << "known" << std::setw(11)
-			  << "false occ" << std::setw(13) << "walls found" << "\n";
-	double fastTime = 0, standardTime = 0, wholeTileTime = 0;
-	size_t fastKnown = 0, fastCorrect = 0, stdKnown = 0, stdCorrect = 0;
-	auto row = [](const std::string& run, const std::string& map, size_t updates, double msPerUpdate,
-				  const TTruthScore& s) {
-		std::cout << std::left << std::setw(10) << run << std::setw(16) << map << std::right << std::setw(8) << updates
-				  << std::fixed << std::setprecision(3) << std::setw(12) << msPerUpdate << std::setprecision(4)
-				  << std::setw(11) << s.agreement() << std::setw(9) << s.known << std::setw(11) << s.false_occupied
-				  << std::setprecision(3) << std::setw(13) << s.wallsFound() << "\n";
-	};
-	struct TLaserRow
-	{
-		std::string run;
-		TTruthScore ours, mrpt;
-		double ours_us = 0, mrpt_us = 0;
-	};
-	std::vector<TLaserRow> laserRows;
+			  << " deg, 0.1 m cells); agreement with the ground-truth map\n";
+	const CReportTable table = sonarMapTable();
+	table.printHeader();
+	TSonarModelTotals models;
+	std::vector<TLaserComparison> laserRows;
 	for (const auto& run : runs)
 	{
 		maps::CTiledOccupancyGrid probe;
 		const TTruth truth = groundTruth(run, probe.geometry());
-		const size_t n = run.sonars.size();
-		maps::CTiledOccupancyGrid fastMap, stdMap, laserMap, fusedMap;
-		const maps::CSonarGridInserter fast(sonarOptions("fast", 1.0)), standard(sonarOptions("standard", 1.0));
-		auto wholeTileOptions = sonarOptions("standard", 1.0);
-		wholeTileOptions.standard_scans_whole_tile = true;
-		const maps::CSonarGridInserter standardWholeTile(wholeTileOptions);
-		const double tFast = bestTimeOf(repetitions, [&] {
-			maps::CTiledOccupancyGrid g;
-			insertSonars(g, run.sonars, fast);
-		});
-		const double tStd = bestTimeOf(repetitions, [&] {
-			maps::CTiledOccupancyGrid g;
-			insertSonars(g, run.sonars, standard);
-		});
-		maps::CTiledOccupancyGrid wholeTileMap;
-		const double tWhole = bestTimeOf(1, [&] { insertSonars(wholeTileMap, run.sonars, standardWholeTile); });
-		insertSonars(fastMap, run.sonars, fast);
-		insertSonars(stdMap, run.sonars, standard);
-		fastTime += tFast, standardTime += tStd, wholeTileTime += tWhole;
-		const TTruthScore sf = scoreOurs(fastMap, truth), ss = scoreOurs(stdMap, truth);
-		fastKnown += sf.known, fastCorrect += sf.correct, stdKnown += ss.known, stdCorrect += ss.correct;
-		row(run.name, "sonar fast", n, 1e3 * tFast / n, sf);
-		row(run.name, "sonar standard", n, 1e3 * tStd / n, ss);
-		row(run.name, "  (whole tile)", n, 1e3 * tWhole / n, scoreOurs(wholeTileMap, truth));
-
-		// Laser only (thesis laser model, 3 m), and fused with the default sonar weight.
-		maps::CLaserGridInserter laser;  // thesis defaults: long beams dropped
-		for (const auto& s : run.scans) laser.insert(laserMap, s.pose, s.scan);
-		row(run.name, "laser", run.scans.size(), 0.0, scoreOurs(laserMap, truth));
-		const maps::CSonarGridInserter fusedSonar;  // defaults: fast, weight 0.1
-		for (const auto& s : run.scans) laser.insert(fusedMap, s.pose, s.scan);
-		insertSonars(fusedMap, run.sonars, fusedSonar);
-		row(run.name, "laser+sonar", run.scans.size() + n, 0.0, scoreOurs(fusedMap, truth));
-		for (const double w : {0.25, 0.5})
-		{
-			maps::CTiledOccupancyGrid g;
-			for (const auto& s : run.scans) laser.insert(g, s.pose, s.scan);
-			insertSonars(g, run.sonars, maps::CSonarGridInserter(sonarOptions("fast", w)));
-			std::ostringstream name;
-			name << "  sonar w=" << w;
-			row(run.name, name.str(), run.scans.size() + n, 0.0, scoreOurs(g, truth));
-		}
-		// The same with the laser also clearing up to 3 m along its long beams.
-		maps::CTiledOccupancyGrid fusedClearMap;
-		maps::CLaserGridInserter clearingLaser(ourLaserOptions());
-		for (const auto& s : run.scans) clearingLaser.insert(fusedClearMap, s.pose, s.scan);
-		insertSonars(fusedClearMap, run.sonars, fusedSonar);
-		row(run.name, "laser+sonar *", run.scans.size() + n, 0.0, scoreOurs(fusedClearMap, truth));
-
-		saveMap(fastMap, run, outDir + "/" + run.name + "_sonar_fast.png");
-		saveMap(stdMap, run, outDir + "/" + run.name + "_sonar_standard.png");
-		saveMap(laserMap, run, outDir + "/" + run.name + "_laser.png");
-		saveMap(fusedMap, run, outDir + "/" + run.name + "_fused.png");
-
-		// Laser: tiled grid vs MRPT, same scans, comparable settings (bench_common.h).
-		TLaserRow lr;
-		lr.run = run.name;
-		maps::CTiledOccupancyGrid ours;
-		insertOurs(ours, run.scans);
-		auto mrptGrid = makeMrptGrid(ours);
-		insertMrpt(mrptGrid, run.scans);
-		lr.ours = scoreOurs(ours, truth);
-		lr.mrpt = scoreMrpt(mrptGrid, ours.geometry(), truth);
-		const double perScan = 1e6 / static_cast<double>(run.scans.size());
-		lr.ours_us = perScan * bestTimeOf(repetitions, [&] {
-			maps::CTiledOccupancyGrid g;
-			insertOurs(g, run.scans);
-		});
-		lr.mrpt_us = perScan * bestTimeOf(repetitions, [&] {
-			auto g = makeMrptGrid(ours);
-			insertMrpt(g, run.scans);
-		});
-		laserRows.push_back(lr);
+		measureSonarModels(run, truth, repetitions, table, outDir, models);
+		scoreFusedMaps(run, truth, table, outDir);
+		laserRows.push_back(compareLaserWithMrpt(run, truth, repetitions));
 	}
-
-	// ---------------------------------------------------------- 2. laser tiled vs MRPT
 	std::cout << "   (whole tile) = standard model testing every cell of the sensor's 200x200 tile per reading, as the"
 				 " thesis' loop (4.6.3)\n   laser+sonar = fused, sonar weight 0.1 (default); sonar w = other weights\n   * = laser long beams clear free space up to 3 m (insert_free_beyond_range)\n";
-	std::cout << "\n2. Laser maps, tiled grid vs MRPT COccupancyGridMap2D (same scans, 3 m range), against ground truth\n"
-			  << std::left << std::setw(10) << "run" << std::right << std::setw(13) << "ours agree" << std::setw(13)
-			  << "MRPT agree" << std::setw(12) << "ours fo" << std::setw(12) << "MRPT fo" << std::setw(11) << "ours us"
-			  << std::setw(11) << "MRPT us" << "\n";
-	double sumOursUs = 0, sumMrptUs = 0;
-	TTruthScore oursAll, mrptAll;
-	for (const auto& r : laserRows)
-	{
-		std::cout << std::left << std::setw(10) << r.run << std::right << std::fixed << std::setprecision(4)
-				  << std::setw(13) << r.ours.agreement() << std::setw(13) << r.mrpt.agreement() << std::setw(12)
-				  << r.ours.false_occupied << std::setw(12) << r.mrpt.false_occupied << std::setprecision(1)
-				  << std::setw(11) << r.ours_us << std::setw(11) << r.mrpt_us << "\n";
-		sumOursUs += r.ours_us, sumMrptUs += r.mrpt_us;
-		oursAll.known += r.ours.known, oursAll.correct += r.ours.correct;
-		mrptAll.known += r.mrpt.known, mrptAll.correct += r.mrpt.correct;
-	}
-
-	// Large sparse run: an L-shaped corridor in a 200 m x 200 m building.
-	const TSimRun sparse = simulate("sparse", "polyline -95 -81 81 -81 81 95\npolyline -95 -79 79 -79 79 95\n",
-									"80 -80; 80 90", {-92, -80, 0}, 1.0, false);
-	maps::CTiledOccupancyGrid sparseOurs;
-	insertOurs(sparseOurs, sparse.scans);
-	const auto sparseMrpt = makeMrptGrid(sparseOurs);
-	const size_t oursBytes = sparseOurs.memoryBytes(), mrptBytes = mrptGridBytes(sparseMrpt);
-	std::cout << "   sparse L corridor (" << sparse.scans.size() << " scans, 172 m + 170 m): ours " << sparseOurs.tileCount()
-			  << " tiles = " << oursBytes / 1024 << " KiB, MRPT one rectangle " << sparseMrpt.getSizeX() << "x"
-			  << sparseMrpt.getSizeY() << " = " << mrptBytes / 1024 << " KiB\n";
-
-	// ---------------------------------------------------------- 3. TBF
-	struct TVariant
-	{
-		std::string name;
-		bool stability, clustering;
-		double coneFraction;
-	};
-	const std::vector<TVariant> variants{{"in-cone only (basic TBF)", false, false, 1.0},
-										 {"+ stability 20 deg", true, false, 1.0},
-										 {"+ stability + clustering", true, true, 1.0},
-										 {"clustering + cone-rim, no stability", false, true, 0.8},
-										 {"+ cone-rim rejection (default)", true, true, 0.8}};
-	std::cout << "\n3. TBF sonar corners vs true corners (within 0.2 m); observable = in some cone within 3 m, in sight\n"
-			  << std::left << std::setw(34) << "filters" << std::right << std::setw(9) << "corners" << std::setw(11)
-			  << "precision" << std::setw(12) << "observable" << std::setw(9) << "recall" << "\n";
-	TTbfScore finalScore, support4, support8;
-	for (const auto& v : variants)
-	{
-		TTbfScore total;
-		for (const auto& run : runs)
-		{
-			sonar::CTbfCornerDetector::TOptions o;
-			o.use_stability_filter = v.stability;
-			o.use_clustering = v.clustering;
-			o.cone_fraction = v.coneFraction;
-			const auto tbf = runTbf(run, o);
-			std::vector<TPoint2D> all;
-			for (const auto& c : run.scene.corners) all.push_back(c.point);
-			const auto observable = observableCorners(run, ring);
-			total.add(scoreCorners(tbf.corners(), observable, all));
-			if (&v == &variants.back())
-			{
-				support4.add(scoreCorners(tbf.corners(4), observable, all));
-				support8.add(scoreCorners(tbf.corners(8), observable, all));
-				maps::CTiledOccupancyGrid probe;
-				saveTbfImage(run, probe.geometry(), groundTruth(run, probe.geometry()), tbf,
-							 outDir + "/" + run.name + "_tbf_corners.png");
-			}
-		}
-		std::cout << std::left << std::setw(34) << v.name << std::right << std::setw(9) << total.output << std::fixed
-				  << std::setprecision(3) << std::setw(11) << total.precision() << std::setw(12) << total.observable
-				  << std::setw(9) << total.recall() << "\n";
-		finalScore = total;
-	}
-	for (const auto& [name, score] : {std::pair<std::string, TTbfScore>{"default, support >= 4", support4},
-									  std::pair<std::string, TTbfScore>{"default, support >= 8", support8}})
-		std::cout << std::left << std::setw(34) << name << std::right << std::setw(9) << score.output << std::fixed
-				  << std::setprecision(3) << std::setw(11) << score.precision() << std::setw(12) << score.observable
-				  << std::setw(9) << score.recall() << "\n";
-
+	const TLaserTotals laser = printLaserComparison(laserRows);
+	const TSparseMemory sparse = measureSparseMemory();
+	const TTbfDefaultScores tbf = evaluateTbfVariants(runs, ring, outDir);
 	std::cout << "\nimages: " << outDir << "/{office,corridor}_{sonar_fast,sonar_standard,laser,fused,tbf_corners}.png\n";
-	std::cout << std::defaultfloat << std::setprecision(6) << "\nlaser_tiled_vs_mrpt_insert_speedup=" << sumMrptUs / sumOursUs
-			  << "\nlaser_tiled_truth_agreement=" << oursAll.agreement()
-			  << "\nlaser_mrpt_truth_agreement=" << mrptAll.agreement() << "\nsparse_run_tiled_bytes=" << oursBytes
-			  << "\nsparse_run_mrpt_bytes=" << mrptBytes
-			  << "\nsonar_fast_ms_per_update=" << 1e3 * fastTime / (runs[0].sonars.size() + runs[1].sonars.size())
-			  << "\nsonar_standard_ms_per_update="
-			  << 1e3 * standardTime / (runs[0].sonars.size() + runs[1].sonars.size())
-			  << "\nsonar_standard_whole_tile_ms_per_update="
-			  << 1e3 * wholeTileTime / (runs[0].sonars.size() + runs[1].sonars.size())
-			  << "\nsonar_fast_vs_whole_tile_standard_speedup=" << wholeTileTime / fastTime
-			  << "\nsonar_fast_vs_standard_speedup=" << standardTime / fastTime
-			  << "\nsonar_fast_cell_agreement=" << static_cast<double>(fastCorrect) / fastKnown
-			  << "\nsonar_standard_cell_agreement=" << static_cast<double>(stdCorrect) / stdKnown
-			  << "\ntbf_precision=" << finalScore.precision() << "\ntbf_recall=" << finalScore.recall() << "\n";
+	printSonarKeys(laser, sparse, models, runs[0].sonars.size() + runs[1].sonars.size(), tbf.all);
 	return 0;
 }
 

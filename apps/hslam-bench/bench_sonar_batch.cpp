@@ -24,7 +24,7 @@
 #include <hslam/common/ini_file.h>
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/eval/point_landmark_score.h>
-#include <hslam/io/CRawlogReader.h>
+#include <hslam/io/rawlog_scans.h>
 #include <hslam/maps/grid_comparison.h>
 #include <hslam/sim/scene.h>
 #include <hslam/slam/CMappingPipeline.h>
@@ -103,11 +103,7 @@ void printRow(const std::string& sample, const std::string& name, const maps::TC
 /** Every run of kRuns on one sample's rawlog; `cells` gets the union of their observed areas. */
 std::vector<TRunResult> runConfigs(const std::string& ini, const std::string& dir, maps::TCellBounds& cells)
 {
-	std::vector<io::TRawlogEntry> entries;
-	{
-		io::CRawlogReader reader(dir + "/sim.rawlog");
-		for (io::TRawlogEntry e; reader.next(e);) entries.push_back(e);
-	}
+	const std::vector<io::TRawlogEntry> entries = io::readRawlogEntries(dir + "/sim.rawlog");
 	std::vector<TRunResult> runs;
 	for (const auto& config : kRuns)
 	{

@@ -17,7 +17,7 @@
 
 #include <hslam/common/config_overrides.h>
 #include <hslam/common/tum_trajectory.h>
-#include <hslam/io/CRawlogReader.h>
+#include <hslam/io/rawlog_scans.h>
 #include <hslam/slam/CMappingPipeline.h>
 #include <hslam/vision/observation_image.h>
 
@@ -200,8 +200,7 @@ TCueScore runAndScore(const std::string& dir, const std::vector<io::TRawlogEntry
 	TCueScore sc;
 	pipeline.addScanObserver([&](const mrpt::obs::CObservation2DRangeScan&, const mrpt::poses::CPose2D&) {
 		if (!pipeline.dynamicFilter()) return;
-		const auto& cue = pipeline.dynamicFilter()->lastFrame().leg_camera_cue;
-		sc.cue_legs += static_cast<size_t>(std::count(cue.begin(), cue.end(), true));
+		for (const auto& leg : pipeline.dynamicFilter()->lastFrame().legs) sc.cue_legs += leg.camera_cue;
 	});
 	const auto t0 = std::chrono::steady_clock::now();
 	for (const auto& e : entries) pipeline.processEntry(e);
@@ -238,9 +237,7 @@ bool runVisionCuesPart(const std::string& dir)
 		std::cerr << "hslam-bench vision: " << dir << "/sim.rawlog not found (the cue part needs rawlog_samples/camera)\n";
 		return false;
 	}
-	std::vector<io::TRawlogEntry> entries;
-	io::CRawlogReader reader(dir + "/sim.rawlog");
-	for (io::TRawlogEntry e; reader.next(e);) entries.push_back(e);
+	const std::vector<io::TRawlogEntry> entries = io::readRawlogEntries(dir + "/sim.rawlog");
 	const TCueTruth truth = loadCueTruth(dir);
 	std::cout << "Camera cues vs laser leg tracks (" << dir << ", batch pipeline, " << truth.poses.size()
 			  << " scans; recall of visible person-scans, %)\n"

@@ -45,34 +45,41 @@ void writeGridMap(const std::string& path, const mrpt::maps::COccupancyGridMap2D
 	arch << grid;
 }
 
-int simulate(const std::string& iniFile, const std::vector<std::string>& overrides, const std::string& outDir,
-			 double gtResolution, bool quiet)
+/** config_used.ini and corners.csv: what the run was made of. */
+void writeRunInputs(const hslam::sim::TSimulatorConfig& config, const hslam::sim::TScene& scene,
+					const std::string& outDir)
 {
-	const auto cfg = hslam::common::loadConfigWithOverrides(iniFile, overrides);
-	const auto config = hslam::sim::loadSimulatorConfig(cfg);
-	const std::string baseDir = std::filesystem::path(iniFile).parent_path().string();
-	hslam::sim::TScene scene = hslam::sim::loadScene(config.world, baseDir);
-	std::filesystem::create_directories(outDir);
-
 	mrpt::config::CConfigFileMemory used;
 	hslam::sim::saveSimulatorConfig(config, used);
 	std::ofstream(outDir + "/config_used.ini") << used.getContent();
 	writeCorners(outDir + "/corners.csv", scene.corners);
+}
 
-	const auto gtGrid = hslam::sim::rasterizeWorld(scene.world, gtResolution, 1.0);
+/** The world rasterised at gtResolution_m, written as gt_map.png and gt_map.gridmap.gz. */
+mrpt::maps::COccupancyGridMap2D writeGroundTruthMap(const hslam::sim::CWorld& world, double gtResolution_m,
+													const std::string& outDir)
+{
+	const auto gtGrid = hslam::sim::rasterizeWorld(world, gtResolution_m, 1.0);
 	if (!gtGrid.saveAsBitmapFile(outDir + "/gt_map.png"))
 		throw std::runtime_error(outDir + "/gt_map.png: cannot write");
 	writeGridMap(outDir + "/gt_map.gridmap.gz", gtGrid);
+	return gtGrid;
+}
 
-	if (config.camera.enabled && config.camera.jpeg_quality > 0)
-	{  // MRPT's (process-wide) serialization setting: RGB images stored as JPEG
-		mrpt::img::CImage::DISABLE_JPEG_COMPRESSION(false);
-		mrpt::img::CImage::SERIALIZATION_JPEG_QUALITY(config.camera.jpeg_quality);
-	}
-	CSimulationWriter writer(outDir, scene.people.size());
-	hslam::sim::CSimulator sim(config, std::move(scene));
+/** MRPT's (process-wide) serialization setting: RGB images stored as JPEG. */
+void configureCameraJpeg(const hslam::sim::TSimulatorConfig& config)
+{
+	if (!config.camera.enabled || config.camera.jpeg_quality <= 0) return;
+	mrpt::img::CImage::DISABLE_JPEG_COMPRESSION(false);
+	mrpt::img::CImage::SERIALIZATION_JPEG_QUALITY(config.camera.jpeg_quality);
+}
+
+/** Steps the simulator to its end into `writer`; returns the number of steps
+ * with the robot body (P3-DX radius 0.25 m) overlapping static geometry. */
+long runToEnd(hslam::sim::CSimulator& sim, CSimulationWriter& writer, bool quiet)
+{
 	int lastReport = -1;
-	long collisionSteps = 0;  // steps with the robot body (P3-DX radius 0.25 m) overlapping static geometry
+	long collisionSteps = 0;
 	while (!sim.done())
 	{
 		sim.step(writer);
@@ -86,13 +93,22 @@ int simulate(const std::string& iniFile, const std::vector<std::string>& overrid
 		}
 	}
 	if (!quiet) std::cerr << "\n";
-	writer.finish();
+	return collisionSteps;
+}
 
+void writeOverview(const mrpt::maps::COccupancyGridMap2D& gtGrid, const hslam::sim::CSimulator& sim,
+				   const CSimulationWriter& writer, const std::string& outDir)
+{
 	hslam::sim::TOverviewTracks tracks = writer.tracks();
 	tracks.corners = sim.scene().corners;
 	if (!hslam::sim::renderOverview(gtGrid, tracks).saveToFile(outDir + "/overview.png"))
 		throw std::runtime_error(outDir + "/overview.png: cannot write");
+}
 
+/** summary.txt: key=value lines of the finished run. */
+std::string summaryText(const hslam::sim::CSimulator& sim, const CSimulationWriter& writer, double physicsDt_s,
+						long collisionSteps)
+{
 	const auto& truth = sim.robot().truePose();
 	// The odometry as reported (after [odometry] fault_*) at the last scan.
 	const auto& reported = writer.tracks().odometry_path;
@@ -106,14 +122,36 @@ int simulate(const std::string& iniFile, const std::vector<std::string>& overrid
 			<< "sonar_readings=" << writer.sonarReadings() << "\n"
 			<< "sonar_echoes=" << writer.sonarEchoes() << "\n"
 			<< "sonar_multipath_echoes=" << writer.sonarMultipath() << "\n"
-			<< "robot_in_collision_s=" << collisionSteps * config.simulation.physics_dt_s << "\n"
+			<< "robot_in_collision_s=" << collisionSteps * physicsDt_s << "\n"
 			<< "people=" << sim.scene().people.size() << "\n"
 			<< "corners=" << sim.scene().corners.size() << "\n"
 			<< "final_true_pose=" << truth.x << " " << truth.y << " " << truth.phi * 180.0 / M_PI << "\n"
 			<< "final_odometry_pose=" << odo.x << " " << odo.y << " " << odo.phi * 180.0 / M_PI << "\n"
 			<< "final_odometry_error_m=" << std::hypot(truth.x - odo.x, truth.y - odo.y) << "\n";
-	std::ofstream(outDir + "/summary.txt") << summary.str();
-	if (!quiet) std::cout << summary.str();
+	return summary.str();
+}
+
+int simulate(const std::string& iniFile, const std::vector<std::string>& overrides, const std::string& outDir,
+			 double gtResolution_m, bool quiet)
+{
+	const auto cfg = hslam::common::loadConfigWithOverrides(iniFile, overrides);
+	const auto config = hslam::sim::loadSimulatorConfig(cfg);
+	const std::string baseDir = std::filesystem::path(iniFile).parent_path().string();
+	hslam::sim::TScene scene = hslam::sim::loadScene(config.world, baseDir);
+	std::filesystem::create_directories(outDir);
+	writeRunInputs(config, scene, outDir);
+	const auto gtGrid = writeGroundTruthMap(scene.world, gtResolution_m, outDir);
+	configureCameraJpeg(config);
+
+	CSimulationWriter writer(outDir, scene.people.size());
+	hslam::sim::CSimulator sim(config, std::move(scene));
+	const long collisionSteps = runToEnd(sim, writer, quiet);
+	writer.finish();
+	writeOverview(gtGrid, sim, writer, outDir);
+
+	const std::string summary = summaryText(sim, writer, config.simulation.physics_dt_s, collisionSteps);
+	std::ofstream(outDir + "/summary.txt") << summary;
+	if (!quiet) std::cout << summary;
 	return 0;
 }
 }  // namespace

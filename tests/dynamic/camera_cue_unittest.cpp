@@ -85,10 +85,10 @@ TCueRun runCameraSample(bool cues)
 	pipeline.addScanObserver([&](const mrpt::obs::CObservation2DRangeScan&, const mrpt::poses::CPose2D&) {
 		const auto& f = pipeline.dynamicFilter()->lastFrame();
 		r.legs += f.legs.size();
-		for (size_t i = 0; i < f.leg_camera_cue.size(); ++i)
+		for (const auto& leg : f.legs)
 		{
-			r.cueLegs += f.leg_camera_cue[i];
-			r.cueLegsWithoutEvidence += f.leg_camera_cue[i] && !f.leg_in_free_space[i];
+			r.cueLegs += leg.camera_cue;
+			r.cueLegsWithoutEvidence += leg.camera_cue && !leg.in_free_space;
 		}
 	});
 	hslam::io::CRawlogReader reader(std::string(HSLAM_SOURCE_DIR) + "/rawlog_samples/camera/sim.rawlog");

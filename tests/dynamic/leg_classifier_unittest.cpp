@@ -268,8 +268,10 @@ TEST(KalmanTracker, ConfirmsOnlyTracksWhoseMeanLegProbabilityIsHigh)
 		for (size_t k = 0; k < probabilities.size(); ++k)
 		{
 			const double t = 0.1 * static_cast<double>(k);
-			const std::vector<double> p{probabilities[k]};
-			id = tracker.update({TPoint2D(1.0 + t, 1.0)}, CPose2D(), t, nullptr, nullptr, &p)[0];
+			TTrackObservation z;
+			z.position_m = TPoint2D(1.0 + t, 1.0);
+			z.leg_probability = probabilities[k];
+			id = tracker.update({z}, CPose2D(), t)[0];
 		}
 		return tracker.find(id)->state;
 	};

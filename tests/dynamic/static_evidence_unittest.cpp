@@ -110,22 +110,22 @@ THopResult hopBetweenChairLegs(bool staticEvidence)
 		if (walking) objects.push_back(walker);
 		const auto& frame = filter.process(castScan(robot, objects, room(6.0), 361, M_PI), robot, t);
 		bool walkerSeen = false;
-		for (size_t i = 0; i < frame.legs.size(); ++i)
+		for (const auto& leg : frame.legs)
 		{
 			TPoint2D w;
-			robot.composePoint(frame.legs[i].x_m, frame.legs[i].y_m, w.x, w.y);
+			robot.composePoint(leg.segment.x_m, leg.segment.y_m, w.x, w.y);
 			const bool onChair = std::hypot(w.x - a.x, w.y - a.y) < 0.15 || std::hypot(w.x - b.x, w.y - b.y) < 0.15;
 			if (onChair)
 			{
-				r.clutterDynamicScans += frame.leg_is_dynamic[i];
-				const int id = frame.leg_track[i];
+				r.clutterDynamicScans += leg.is_dynamic;
+				const int id = leg.leg_track;
 				if (lastY.count(id) && std::abs(lastY[id] - w.y) > 0.2) ++r.hops;
 				lastY[id] = w.y;
 			}
 			if (walking && std::hypot(w.x - walker.x, w.y - walker.y) < 0.15)
 			{
 				walkerSeen = true;
-				r.walkerDynamicScans += frame.leg_is_dynamic[i];
+				r.walkerDynamicScans += leg.is_dynamic;
 			}
 		}
 		r.walkerSeenScans += walkerSeen;

@@ -18,7 +18,7 @@ TEST(KalmanTracker, LifeCycleConfirmMissDropReidentify)
 	double t = 0;
 	for (int k = 0; k < 5; ++k, t += dt)
 	{
-		const auto owner = tracker.update({TPoint2D(1.0 + v * t, 1.0)}, sensor, t);
+		const auto owner = tracker.update({{TPoint2D(1.0 + v * t, 1.0)}}, sensor, t);
 		if (k == 0) id = owner[0];
 		EXPECT_EQ(owner[0], id) << "frame " << k;
 	}
@@ -40,7 +40,7 @@ TEST(KalmanTracker, LifeCycleConfirmMissDropReidentify)
 	// once it has moved confirm_travel_m relative to the sensor (the state
 	// is not inherited blindly: clutter next to a lost person would get it).
 	t += 0.5;
-	auto owner = tracker.update({TPoint2D(1.0 + v * t, 1.0)}, sensor, t);
+	auto owner = tracker.update({{TPoint2D(1.0 + v * t, 1.0)}}, sensor, t);
 	EXPECT_EQ(owner[0], id);
 	EXPECT_EQ(tracker.reidentifications(), 1u);
 	ASSERT_TRUE(tracker.find(id));
@@ -48,7 +48,7 @@ TEST(KalmanTracker, LifeCycleConfirmMissDropReidentify)
 	for (int k = 0; k < 3; ++k)
 	{
 		t += dt;
-		owner = tracker.update({TPoint2D(1.0 + v * t, 1.0)}, sensor, t);
+		owner = tracker.update({{TPoint2D(1.0 + v * t, 1.0)}}, sensor, t);
 	}
 	EXPECT_EQ(owner[0], id);
 	EXPECT_EQ(tracker.find(id)->state, ETrackState::dynamic);
@@ -56,7 +56,7 @@ TEST(KalmanTracker, LifeCycleConfirmMissDropReidentify)
 	// Lost again, back after the memory (2 s): a new identity.
 	for (int k = 0; k < 3; ++k) tracker.update({}, sensor, t += dt);
 	t += 3.0;
-	const auto later = tracker.update({TPoint2D(1.0 + v * t, 1.0)}, sensor, t);
+	const auto later = tracker.update({{TPoint2D(1.0 + v * t, 1.0)}}, sensor, t);
 	EXPECT_NE(later[0], id);
 	EXPECT_EQ(tracker.createdTracks(), 2);
 }
@@ -70,10 +70,10 @@ TEST(KalmanTracker, TrackBornOutOfGateTakesOverTheDroppedIdentity)
 	const CPose2D sensor;
 	double t = 0;
 	int id = -1;
-	for (int k = 0; k < 5; ++k, t += 0.1) id = tracker.update({TPoint2D(2.0 + t, 0.0)}, sensor, t)[0];
+	for (int k = 0; k < 5; ++k, t += 0.1) id = tracker.update({{TPoint2D(2.0 + t, 0.0)}}, sensor, t)[0];
 	ASSERT_EQ(tracker.find(id)->state, ETrackState::dynamic);
 	std::vector<int> owner;
-	for (int k = 0; k < 3; ++k, t += 0.1) owner = tracker.update({TPoint2D(2.0 + t, 0.6)}, sensor, t);
+	for (int k = 0; k < 3; ++k, t += 0.1) owner = tracker.update({{TPoint2D(2.0 + t, 0.6)}}, sensor, t);
 	EXPECT_EQ(owner[0], id);
 	EXPECT_EQ(tracker.tracks().size(), 1u);
 	EXPECT_EQ(tracker.reidentifications(), 1u);
@@ -86,7 +86,7 @@ TEST(KalmanTracker, StaticObjectBecomesGhostAndNeverDynamic)
 	const CPose2D sensor;
 	std::vector<int> owner;
 	for (int k = 0; k < 8; ++k)  // 1 cm jitter, like a wall piece under noise
-		owner = tracker.update({TPoint2D(2.0 + 0.01 * (k % 2), -0.5)}, sensor, 0.1 * k);
+		owner = tracker.update({{TPoint2D(2.0 + 0.01 * (k % 2), -0.5)}}, sensor, 0.1 * k);
 	ASSERT_TRUE(tracker.find(owner[0]));
 	EXPECT_EQ(tracker.find(owner[0])->state, ETrackState::ghost);
 	EXPECT_LT(tracker.find(owner[0])->speed_mps(), 0.1);
@@ -96,12 +96,11 @@ TEST(KalmanTracker, MotionEvidenceIsRequiredWhenGiven)
 {
 	CKalmanTracker tracker;
 	const CPose2D sensor;
-	const std::vector<bool> none = {false}, free = {true};
 	std::vector<int> owner;
-	for (int k = 0; k < 6; ++k) owner = tracker.update({TPoint2D(1.0 + 0.1 * k, 0.0)}, sensor, 0.1 * k, &none);
+	for (int k = 0; k < 6; ++k) owner = tracker.update({{TPoint2D(1.0 + 0.1 * k, 0.0), false}}, sensor, 0.1 * k);
 	ASSERT_TRUE(tracker.find(owner[0]));
 	EXPECT_NE(tracker.find(owner[0])->state, ETrackState::dynamic);  // "moves" but never into free space
-	owner = tracker.update({TPoint2D(1.6, 0.0)}, sensor, 0.6, &free);
+	owner = tracker.update({{TPoint2D(1.6, 0.0), true}}, sensor, 0.6);
 	EXPECT_EQ(tracker.find(owner[0])->state, ETrackState::dynamic);
 }
 
@@ -187,8 +186,8 @@ TEST(KalmanTracker, ObjectCarriedByTheRobotIsNotDynamic)
 		const CPose2D sensor(0.05 * k, 0.0, 0.0);  // 0.5 m/s at 10 Hz
 		TPoint2D part;
 		sensor.composePoint(-0.25, 0.1, part.x, part.y);
-		a = withCheck.update({part}, sensor, 0.1 * k);
-		b = without.update({part}, sensor, 0.1 * k);
+		a = withCheck.update({{part}}, sensor, 0.1 * k);
+		b = without.update({{part}}, sensor, 0.1 * k);
 	}
 	ASSERT_TRUE(withCheck.find(a[0]) && without.find(b[0]));
 	EXPECT_NEAR(withCheck.find(a[0])->travel_m, 0.95, 1e-6);
@@ -213,9 +212,9 @@ TEST(KalmanTracker, SlowDriftIsNotSustainedMotion)
 	{
 		const double t = 0.1 * k;
 		const TPoint2D drift(2.0, 0.1 * t);
-		a = sustained.update({drift}, sensor, t);
-		b = once.update({drift}, sensor, t);
-		c = walk.update({TPoint2D(2.0, 0.6 * t)}, sensor, t);
+		a = sustained.update({{drift}}, sensor, t);
+		b = once.update({{drift}}, sensor, t);
+		c = walk.update({{TPoint2D(2.0, 0.6 * t)}}, sensor, t);
 	}
 	ASSERT_TRUE(sustained.find(a[0]) && once.find(b[0]) && walk.find(c[0]));
 	EXPECT_GT(sustained.find(a[0])->travel_m, 0.25);
@@ -272,15 +271,15 @@ TEST(KalmanTracker, MetricGateDoesNotWidenWithRange)
 	std::vector<int> a, b;
 	for (int k = 0; k < 3; ++k)
 	{
-		a = polar.update({TPoint2D(4.0, 0.0)}, sensor, 0.1 * k);
-		b = gated.update({TPoint2D(4.0, 0.0)}, sensor, 0.1 * k);
+		a = polar.update({{TPoint2D(4.0, 0.0)}}, sensor, 0.1 * k);
+		b = gated.update({{TPoint2D(4.0, 0.0)}}, sensor, 0.1 * k);
 	}
 	const int idPolar = a[0], idGated = b[0];
-	a = polar.update({TPoint2D(4.0, 0.5)}, sensor, 0.3);
-	b = gated.update({TPoint2D(4.0, 0.5)}, sensor, 0.3);
+	a = polar.update({{TPoint2D(4.0, 0.5)}}, sensor, 0.3);
+	b = gated.update({{TPoint2D(4.0, 0.5)}}, sensor, 0.3);
 	EXPECT_EQ(a[0], idPolar);
 	EXPECT_NE(b[0], idGated);
 	// 0.2 m across (nearer to the old track than to the new one): the old track.
-	b = gated.update({TPoint2D(4.0, 0.2)}, sensor, 0.4);
+	b = gated.update({{TPoint2D(4.0, 0.2)}}, sensor, 0.4);
 	EXPECT_EQ(b[0], idGated);
 }

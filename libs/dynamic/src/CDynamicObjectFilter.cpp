@@ -63,11 +63,10 @@ CDynamicObjectFilter::CDynamicObjectFilter(const TOptions& options, std::shared_
 
 void CDynamicObjectFilter::markCameraCueEvidence(double t_s)
 {
-	for (size_t i = 0; i < m_frame.legs.size(); ++i)
+	for (auto& leg : m_frame.legs)
 	{
-		const bool cue = m_cues.supports(std::atan2(m_frame.legs[i].y_m, m_frame.legs[i].x_m), t_s);
-		m_frame.leg_camera_cue.push_back(cue);
-		if (cue) m_frame.leg_in_free_space[i] = true;
+		leg.camera_cue = m_cues.supports(std::atan2(leg.segment.y_m, leg.segment.x_m), t_s);
+		if (leg.camera_cue) leg.in_free_space = true;
 	}
 }
 
@@ -91,7 +90,7 @@ double CDynamicObjectFilter::maskRadius(const TTrack& t) const
 }
 
 void CDynamicObjectFilter::pairLegs(const std::vector<mrpt::math::TPoint2D>& legs,
-									std::vector<mrpt::math::TPoint2D>& persons, std::vector<int>& personOfLeg) const
+									std::vector<TTrackObservation>& persons, std::vector<int>& personOfLeg) const
 {
 	personOfLeg.assign(legs.size(), -1);
 	persons.clear();
@@ -107,56 +106,81 @@ void CDynamicObjectFilter::pairLegs(const std::vector<mrpt::math::TPoint2D>& leg
 	{
 		if (personOfLeg[a] >= 0 || personOfLeg[b] >= 0) continue;
 		personOfLeg[a] = personOfLeg[b] = static_cast<int>(persons.size());
-		persons.push_back({0.5 * (legs[a].x + legs[b].x), 0.5 * (legs[a].y + legs[b].y)});
+		persons.emplace_back();
+		persons.back().position_m = {0.5 * (legs[a].x + legs[b].x), 0.5 * (legs[a].y + legs[b].y)};
 	}
 	for (size_t a = 0; a < legs.size(); ++a)
 		if (personOfLeg[a] < 0)
 		{
 			personOfLeg[a] = static_cast<int>(persons.size());
-			persons.push_back(legs[a]);
+			persons.emplace_back();
+			persons.back().position_m = legs[a];
 		}
 }
 
 void CDynamicObjectFilter::updatePersonTracks(const std::vector<mrpt::math::TPoint2D>& legsWorld,
-											  const std::vector<double>& legProbability,
 											  const mrpt::poses::CPose2D& sensorPose, double t_s, bool useEvidence)
 {
 	constexpr double kNever = std::numeric_limits<double>::infinity();
-	std::vector<mrpt::math::TPoint2D> personsWorld;
+	std::vector<TTrackObservation> persons;
 	std::vector<int> personOfLeg;
-	pairLegs(legsWorld, personsWorld, personOfLeg);
+	pairLegs(legsWorld, persons, personOfLeg);
 	// Person evidence: one of its legs is where free space was and, with
 	// person_needs_dynamic_leg, on a leg track confirmed dynamic itself (a
 	// pair of static legs changes its midpoint when the pairing changes).
-	std::vector<bool> personEvidence(personsWorld.size(), false);  // every person has a leg
-	std::vector<double> personStaticSince(personsWorld.size(), -kNever);  // all its legs on static structure
-	std::vector<double> personProbability(personsWorld.size(), 0.0), legsOfPerson(personsWorld.size(), 0.0);
-	for (size_t i = 0; i < legsWorld.size(); ++i)
-	{
-		personProbability[static_cast<size_t>(personOfLeg[i])] += legProbability[i];
-		legsOfPerson[static_cast<size_t>(personOfLeg[i])] += 1;
-		auto& since = personStaticSince[static_cast<size_t>(personOfLeg[i])];
-		since = std::max(since, m_frame.leg_static_since_s[i]);
-		const TTrack* leg = m_legs.find(m_frame.leg_track[i]);
-		const bool legDynamic = leg && leg->state == ETrackState::dynamic;
-		if ((!useEvidence || m_frame.leg_in_free_space[i]) && (!m_options.person_needs_dynamic_leg || legDynamic))
-			personEvidence[static_cast<size_t>(personOfLeg[i])] = true;
-	}
-	for (size_t p = 0; p < personsWorld.size(); ++p) personProbability[p] /= std::max(1.0, legsOfPerson[p]);
+	// Without evidence asked for, every person has it (the rule is waived).
 	const bool usePersonEvidence = useEvidence || m_options.person_needs_dynamic_leg;
-	const std::vector<int> personIds = m_persons.update(
-		personsWorld, sensorPose, t_s, usePersonEvidence ? &personEvidence : nullptr, &personStaticSince, &personProbability);
-
-	m_frame.person_track.resize(m_frame.legs.size());
-	m_frame.leg_is_dynamic.resize(m_frame.legs.size());
+	std::vector<double> legsOfPerson(persons.size(), 0.0);
+	for (auto& p : persons)
+	{
+		p.motion_evidence = false;  // every person has a leg
+		p.static_since_s = -kNever;  // all its legs on static structure
+		p.leg_probability = 0.0;
+	}
 	for (size_t i = 0; i < m_frame.legs.size(); ++i)
 	{
-		m_frame.person_track[i] = personIds[static_cast<size_t>(personOfLeg[i])];
-		const TTrack* leg = m_legs.find(m_frame.leg_track[i]);
-		const TTrack* person = m_persons.find(m_frame.person_track[i]);
-		m_frame.leg_is_dynamic[i] = (leg && leg->state == ETrackState::dynamic) ||
-									(person && person->state == ETrackState::dynamic);
+		const TLegObservation& leg = m_frame.legs[i];
+		const size_t p = static_cast<size_t>(personOfLeg[i]);
+		persons[p].leg_probability += leg.segment.leg_probability;
+		legsOfPerson[p] += 1;
+		persons[p].static_since_s = std::max(persons[p].static_since_s, leg.static_since_s);
+		const TTrack* legTrack = m_legs.find(leg.leg_track);
+		const bool legDynamic = legTrack && legTrack->state == ETrackState::dynamic;
+		if ((!useEvidence || leg.in_free_space) && (!m_options.person_needs_dynamic_leg || legDynamic))
+			persons[p].motion_evidence = true;
 	}
+	for (size_t p = 0; p < persons.size(); ++p)
+	{
+		persons[p].leg_probability /= std::max(1.0, legsOfPerson[p]);
+		if (!usePersonEvidence) persons[p].motion_evidence = true;
+	}
+	const std::vector<int> personIds = m_persons.update(persons, sensorPose, t_s);
+	for (size_t i = 0; i < m_frame.legs.size(); ++i)
+	{
+		TLegObservation& leg = m_frame.legs[i];
+		leg.person_track = personIds[static_cast<size_t>(personOfLeg[i])];
+		const TTrack* legTrack = m_legs.find(leg.leg_track);
+		const TTrack* person = m_persons.find(leg.person_track);
+		leg.is_dynamic = (legTrack && legTrack->state == ETrackState::dynamic) ||
+						 (person && person->state == ETrackState::dynamic);
+	}
+}
+
+std::vector<TTrackObservation> CDynamicObjectFilter::legObservations(const std::vector<mrpt::math::TPoint2D>& legsWorld,
+																	 const mrpt::poses::CPose2D& sensorPose, double t_s,
+																	 bool useEvidence)
+{
+	for (size_t i = 0; i < legsWorld.size(); ++i) m_frame.legs[i].in_free_space = seenFreeBefore(legsWorld[i], sensorPose);
+	if (m_options.camera_cues.enabled) markCameraCueEvidence(t_s);
+	std::vector<TTrackObservation> observations(legsWorld.size());
+	for (size_t i = 0; i < legsWorld.size(); ++i)
+	{
+		TLegObservation& leg = m_frame.legs[i];
+		if (m_options.static_evidence) leg.static_since_s = m_static.staticSince(legsWorld[i], t_s);
+		observations[i] = {legsWorld[i], !useEvidence || leg.in_free_space, leg.static_since_s,
+						   leg.segment.leg_probability};
+	}
+	return observations;
 }
 
 const TDynamicFrame& CDynamicObjectFilter::process(const mrpt::obs::CObservation2DRangeScan& scan,
@@ -167,28 +191,19 @@ const TDynamicFrame& CDynamicObjectFilter::process(const mrpt::obs::CObservation
 	m_frame.pending_since_scan = m_frame.scan_index + 1;
 	m_frame.t_s = t_s;
 	m_frame.robot_pose = robotPose;
-	m_frame.legs = m_detector.detect(scan);
-
 	std::vector<mrpt::math::TPoint2D> legsWorld;
-	for (const auto& l : m_frame.legs)
+	for (const auto& segment : m_detector.detect(scan))
 	{
+		m_frame.legs.push_back({segment});
 		mrpt::math::TPoint2D w;
-		robotPose.composePoint(l.x_m, l.y_m, w.x, w.y);
+		robotPose.composePoint(segment.x_m, segment.y_m, w.x, w.y);
 		legsWorld.push_back(w);
 	}
 	const mrpt::poses::CPose2D sensorPose = robotPose + mrpt::poses::CPose2D(scan.sensorPose);
-
-	for (const auto& l : legsWorld) m_frame.leg_in_free_space.push_back(seenFreeBefore(l, sensorPose));
-	if (m_options.camera_cues.enabled) markCameraCueEvidence(t_s);
-	constexpr double kNever = std::numeric_limits<double>::infinity();
-	for (const auto& l : legsWorld)
-		m_frame.leg_static_since_s.push_back(m_options.static_evidence ? m_static.staticSince(l, t_s) : kNever);
 	const bool useEvidence = m_options.tracker.confirm_free_hits > 0;
-	std::vector<double> legProbability;
-	for (const auto& l : m_frame.legs) legProbability.push_back(l.leg_probability);
-	m_frame.leg_track = m_legs.update(legsWorld, sensorPose, t_s, useEvidence ? &m_frame.leg_in_free_space : nullptr,
-									  &m_frame.leg_static_since_s, &legProbability);
-	updatePersonTracks(legsWorld, legProbability, sensorPose, t_s, useEvidence);
+	const std::vector<int> legIds = m_legs.update(legObservations(legsWorld, sensorPose, t_s, useEvidence), sensorPose, t_s);
+	for (size_t i = 0; i < legIds.size(); ++i) m_frame.legs[i].leg_track = legIds[i];
+	updatePersonTracks(legsWorld, sensorPose, t_s, useEvidence);
 	m_frame.leg_tracks = m_legs.tracks();
 	m_frame.person_tracks = m_persons.tracks();
 	buildMask(scan, robotPose);
@@ -214,10 +229,9 @@ void CDynamicObjectFilter::collectLateExclusions(const mrpt::obs::CObservation2D
 	// the beams ending within mask_radius_m of it. Each beam counts once.
 	const size_t n = scan.getScanSize();
 	std::vector<int> personOfBeam(n, -1);
-	for (size_t i = 0; i < m_frame.legs.size(); ++i)
-		if (!m_frame.leg_is_dynamic[i])
-			for (size_t b = m_frame.legs[i].first_beam; b <= m_frame.legs[i].last_beam; ++b)
-				personOfBeam[b] = m_frame.person_track[i];
+	for (const auto& leg : m_frame.legs)
+		if (!leg.is_dynamic)
+			for (size_t b = leg.segment.first_beam; b <= leg.segment.last_beam; ++b) personOfBeam[b] = leg.person_track;
 	struct TDisc
 	{
 		int id;
@@ -259,10 +273,10 @@ void CDynamicObjectFilter::buildMask(const mrpt::obs::CObservation2DRangeScan& s
 	auto& mask = m_frame.beam_is_dynamic;
 	mask.assign(n, false);
 	const size_t margin = static_cast<size_t>(m_options.mask_margin_beams);
-	for (size_t i = 0; i < m_frame.legs.size(); ++i)
+	for (const auto& leg : m_frame.legs)
 	{
-		if (!m_frame.leg_is_dynamic[i]) continue;
-		const auto& l = m_frame.legs[i];
+		if (!leg.is_dynamic) continue;
+		const auto& l = leg.segment;
 		const size_t from = l.first_beam >= margin ? l.first_beam - margin : 0;
 		const size_t to = std::min(n - 1, l.last_beam + margin);
 		for (size_t b = from; b <= to; ++b) mask[b] = true;

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <tuple>
 
 namespace hslam::dynamic
@@ -143,15 +142,15 @@ bool CKalmanTracker::meetsConfirmation(const TTrack& t) const
 		   t.free_hits >= o.confirm_free_hits && t.moving_frames >= o.confirm_moving_frames;
 }
 
-void CKalmanTracker::registerHit(TTrack& t, const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose,
-								 bool evidence, double staticSince_s, double legProbability) const
+void CKalmanTracker::registerHit(TTrack& t, const TTrackObservation& obs, const mrpt::poses::CPose2D& sensorPose) const
 {
+	const mrpt::math::TPoint2D& z = obs.position_m;
 	++t.hits;
-	t.leg_probability_sum += legProbability;
-	t.on_static = std::isfinite(staticSince_s);
-	t.static_hits += staticSince_s <= t.t_birth_s;
+	t.leg_probability_sum += obs.leg_probability;
+	t.on_static = std::isfinite(obs.static_since_s);
+	t.static_hits += obs.static_since_s <= t.t_birth_s;
 	t.misses = 0;
-	t.free_hits += evidence;
+	t.free_hits += obs.motion_evidence;
 	t.travel_m = std::max(t.travel_m, std::hypot(z.x - t.birth_m.x, z.y - t.birth_m.y));
 	const auto zs = sensorPose.inverseComposePoint(z);
 	t.sensor_travel_m = std::max(t.sensor_travel_m, std::hypot(zs.x - t.sensor_birth_m.x, zs.y - t.sensor_birth_m.y));
@@ -200,29 +199,21 @@ void CKalmanTracker::takeOverFromMemory(double t_s, std::vector<int>& owner)
 	}
 }
 
-std::vector<int> CKalmanTracker::update(const std::vector<mrpt::math::TPoint2D>& observations,
-										const mrpt::poses::CPose2D& sensorPose, double t_s,
-										const std::vector<bool>* motionEvidence, const std::vector<double>* staticSince_s,
-										const std::vector<double>* legProbability)
+std::vector<int> CKalmanTracker::associate(const std::vector<TTrackObservation>& observations,
+										   const mrpt::poses::CPose2D& sensorPose, double t_s,
+										   std::vector<bool>& trackUsed)
 {
-	const auto probability = [&](size_t oi) { return legProbability ? (*legProbability)[oi] : 1.0; };
-	const auto since = [&](size_t oi)
-	{ return staticSince_s ? (*staticSince_s)[oi] : std::numeric_limits<double>::infinity(); };
-	// Without evidence from the caller the requirement is waived (thesis rule).
-	const auto evidence = [&](size_t oi) { return !motionEvidence || (*motionEvidence)[oi]; };
-	for (auto& t : m_tracks) predict(t, t_s);
-
-	// Greedy one-to-one association, nearest (predicted, observed) pairs first.
 	std::vector<std::tuple<double, size_t, size_t>> pairs;  // distance, track, observation
 	for (size_t ti = 0; ti < m_tracks.size(); ++ti)
 		for (size_t oi = 0; oi < observations.size(); ++oi)
-			if (inGate(m_tracks[ti], observations[oi], sensorPose, t_s))
-				pairs.emplace_back(std::hypot(observations[oi].x - m_tracks[ti].x[0],
-											  observations[oi].y - m_tracks[ti].x[1]),
-								   ti, oi);
+		{
+			const auto& z = observations[oi].position_m;
+			if (inGate(m_tracks[ti], z, sensorPose, t_s))
+				pairs.emplace_back(std::hypot(z.x - m_tracks[ti].x[0], z.y - m_tracks[ti].x[1]), ti, oi);
+		}
 	std::sort(pairs.begin(), pairs.end());
 	std::vector<int> owner(observations.size(), -1);
-	std::vector<bool> trackUsed(m_tracks.size(), false);
+	trackUsed.assign(m_tracks.size(), false);
 	for (auto& t : m_tracks) t.observation = -1;
 	for (const auto& [d, ti, oi] : pairs)
 	{
@@ -232,11 +223,14 @@ std::vector<int> CKalmanTracker::update(const std::vector<mrpt::math::TPoint2D>&
 		owner[oi] = t.id;
 		t.observation = static_cast<int>(oi);
 		t.t_seen_s = t_s;
-		correct(t, observations[oi]);
-		registerHit(t, observations[oi], sensorPose, evidence(oi), since(oi), probability(oi));
+		correct(t, observations[oi].position_m);
+		registerHit(t, observations[oi], sensorPose);
 	}
+	return owner;
+}
 
-	// Missed tracks: null counter; dropped after max_misses (dynamic ones are remembered).
+void CKalmanTracker::dropMissedTracks(const std::vector<bool>& trackUsed)
+{
 	std::vector<TTrack> kept;
 	for (size_t ti = 0; ti < m_tracks.size(); ++ti)
 	{
@@ -249,56 +243,74 @@ std::vector<int> CKalmanTracker::update(const std::vector<mrpt::math::TPoint2D>&
 		kept.push_back(t);
 	}
 	m_tracks.swap(kept);
+}
+
+std::vector<CKalmanTracker::TMemory>::iterator CKalmanTracker::rememberedNear(const mrpt::math::TPoint2D& z, double t_s)
+{
+	auto best = m_memory.end();
+	double bestD = m_options.memory_gate_m;
+	for (auto m = m_memory.begin(); m != m_memory.end(); ++m)
+	{
+		const TTrack& old = m->track;
+		const double dt = std::min(t_s - m->t_lost_s, 1.0);  // extrapolate at most 1 s
+		const double dLast = std::hypot(z.x - old.x[0], z.y - old.x[1]);
+		const double dCv = std::hypot(z.x - old.x[0] - old.x[2] * dt, z.y - old.x[1] - old.x[3] * dt);
+		const double d = std::min(dLast, dCv);
+		if (d <= bestD)
+		{
+			bestD = d;
+			best = m;
+		}
+	}
+	return best;
+}
+
+TTrack CKalmanTracker::startTrack(const TTrackObservation& z, const mrpt::poses::CPose2D& sensorPose, double t_s)
+{
+	const auto best = rememberedNear(z.position_m, t_s);
+	TTrack t = newTrack(z.position_m, sensorPose, t_s);
+	t.free_hits = z.motion_evidence;
+	t.on_static = std::isfinite(z.static_since_s);
+	t.static_hits = z.static_since_s <= t_s;
+	t.leg_probability_sum = z.leg_probability;
+	if (best == m_memory.end()) return t;
+	--m_nextId;  // the remembered id is reused
+	const TTrack& old = best->track;
+	t.id = old.id;
+	// Identity comes back at once; the dynamic state when the new track
+	// passes the confirmation rule with the old track's world travel
+	// and counts (at once for the thesis rule; with the relative-motion
+	// test once it has moved relative to the sensor; else clutter next
+	// to a lost person, or the robot's own body, would inherit it).
+	t.birth_m = old.birth_m;
+	t.travel_m = old.travel_m;
+	t.hits = old.hits + 1;
+	t.leg_probability_sum = old.leg_probability_sum + z.leg_probability;
+	t.free_hits = old.free_hits + z.motion_evidence;
+	t.t_birth_s = old.t_birth_s;  // the same object: its static-world record too
+	t.static_hits = old.static_hits + (z.static_since_s <= t.t_birth_s);
+	if (z.motion_evidence && meetsConfirmation(t)) t.state = ETrackState::dynamic;
+	m_memory.erase(best);
+	++m_reidentified;
+	return t;
+}
+
+std::vector<int> CKalmanTracker::update(const std::vector<TTrackObservation>& observations,
+										const mrpt::poses::CPose2D& sensorPose, double t_s)
+{
+	for (auto& t : m_tracks) predict(t, t_s);
+	std::vector<bool> trackUsed;
+	std::vector<int> owner = associate(observations, sensorPose, t_s, trackUsed);
+	dropMissedTracks(trackUsed);
 	takeOverFromMemory(t_s, owner);
 	m_memory.erase(std::remove_if(m_memory.begin(), m_memory.end(),
 								  [&](const TMemory& m) { return t_s - m.t_lost_s > m_options.memory_s; }),
 				   m_memory.end());
-
 	// New tracks, or re-identified remembered ones.
 	for (size_t oi = 0; oi < observations.size(); ++oi)
 	{
 		if (owner[oi] >= 0) continue;
-		const auto& z = observations[oi];
-		auto best = m_memory.end();
-		double bestD = m_options.memory_gate_m;
-		for (auto m = m_memory.begin(); m != m_memory.end(); ++m)
-		{
-			const TTrack& old = m->track;
-			const double dt = std::min(t_s - m->t_lost_s, 1.0);  // extrapolate at most 1 s
-			const double dLast = std::hypot(z.x - old.x[0], z.y - old.x[1]);
-			const double dCv = std::hypot(z.x - old.x[0] - old.x[2] * dt, z.y - old.x[1] - old.x[3] * dt);
-			const double d = std::min(dLast, dCv);
-			if (d <= bestD)
-			{
-				bestD = d;
-				best = m;
-			}
-		}
-		TTrack t = newTrack(z, sensorPose, t_s);
-		t.free_hits = evidence(oi);
-		t.on_static = std::isfinite(since(oi));
-		t.static_hits = since(oi) <= t_s;
-		t.leg_probability_sum = probability(oi);
-		if (best != m_memory.end())
-		{
-			--m_nextId;  // the remembered id is reused
-			t.id = best->track.id;
-			// Identity comes back at once; the dynamic state when the new track
-			// passes the confirmation rule with the old track's world travel
-			// and counts (at once for the thesis rule; with the relative-motion
-			// test once it has moved relative to the sensor; else clutter next
-			// to a lost person, or the robot's own body, would inherit it).
-			t.birth_m = best->track.birth_m;
-			t.travel_m = best->track.travel_m;
-			t.hits = best->track.hits + 1;
-			t.leg_probability_sum = best->track.leg_probability_sum + probability(oi);
-			t.free_hits = best->track.free_hits + evidence(oi);
-			t.t_birth_s = best->track.t_birth_s;  // the same object: its static-world record too
-			t.static_hits = best->track.static_hits + (since(oi) <= t.t_birth_s);
-			if ((!motionEvidence || evidence(oi)) && meetsConfirmation(t)) t.state = ETrackState::dynamic;
-			m_memory.erase(best);
-			++m_reidentified;
-		}
+		TTrack t = startTrack(observations[oi], sensorPose, t_s);
 		owner[oi] = t.id;
 		t.observation = static_cast<int>(oi);
 		m_tracks.push_back(t);

@@ -92,9 +92,9 @@ mrpt::img::CImage renderDynamicFrame(const mrpt::obs::CObservation2DRangeScan& s
 		img.filledRectangle(c - 1, r - 1, c + 1, r + 1, dyn ? kDynamicBeam : kScan);
 	}
 	// Leg segments: begin and end points (thesis figures 156-165), centroid circle.
-	for (size_t i = 0; i < frame.legs.size(); ++i)
+	for (const auto& leg : frame.legs)
 	{
-		const auto& l = frame.legs[i];
+		const auto& l = leg.segment;
 		cv.px(l.x_m, l.y_m, c, r);
 		img.drawCircle(c, r, std::max(3, static_cast<int>(0.1 * cv.scale)), kLeg, 1);
 		for (size_t b : {l.first_beam, l.last_beam})

@@ -1,5 +1,6 @@
 #include <hslam/dynamic/leg_dataset.h>
-#include <hslam/io/CRawlogReader.h>
+#include <hslam/io/csv_line.h>
+#include <hslam/io/rawlog_scans.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,23 +16,6 @@ namespace fs = std::filesystem;
 
 namespace
 {
-/** One CSV line split at commas outside double quotes. */
-std::vector<std::string> splitCsv(const std::string& line)
-{
-	std::vector<std::string> out(1);
-	bool quoted = false;
-	for (char c : line)
-	{
-		if (c == '"')
-			quoted = !quoted;
-		else if (c == ',' && !quoted)
-			out.emplace_back();
-		else if (c != '\r')
-			out.back() += c;
-	}
-	return out;
-}
-
 std::vector<mrpt::math::TPoint2D> parseXyList(const std::string& text, const std::string& where)
 {
 	std::vector<mrpt::math::TPoint2D> legs;
@@ -63,29 +47,13 @@ std::vector<fs::path> filesMatching(const std::string& dir, const std::string& p
 }
 }  // namespace
 
-std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> readRangeScans(const std::string& rawlogPath)
-{
-	io::CRawlogReader reader(rawlogPath);
-	io::TRawlogEntry entry;
-	std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> scans;
-	while (reader.next(entry))
-	{
-		if (auto s = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(entry.observation))
-			scans.push_back(s);
-		if (entry.frame)
-			for (const auto& o : *entry.frame)
-				if (auto s2 = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(o)) scans.push_back(s2);
-	}
-	return scans;
-}
-
 std::vector<std::vector<mrpt::math::TPoint2D>> readLegAnnotations(const std::string& csvPath)
 {
 	std::ifstream in(csvPath);
 	if (!in) throw std::runtime_error(csvPath + ": cannot open");
 	std::string line;
 	std::getline(in, line);
-	const auto header = splitCsv(line);
+	const auto header = io::splitCsvLine(line);
 	const auto col = std::find(header.begin(), header.end(), "annotated_xy");
 	if (col == header.end()) throw std::runtime_error(csvPath + ": line 1: no 'annotated_xy' column");
 	const size_t k = static_cast<size_t>(col - header.begin());
@@ -93,7 +61,7 @@ std::vector<std::vector<mrpt::math::TPoint2D>> readLegAnnotations(const std::str
 	for (size_t lineNo = 2; std::getline(in, line); ++lineNo)
 	{
 		const std::string where = csvPath + ": line " + std::to_string(lineNo);
-		const auto fields = splitCsv(line);
+		const auto fields = io::splitCsvLine(line);
 		if (fields.size() != header.size())
 			throw std::runtime_error(where + ": " + std::to_string(fields.size()) + " fields, header has " +
 									 std::to_string(header.size()));
@@ -111,7 +79,7 @@ std::vector<TLegDataPart> loadLegDataset(const std::string& dir)
 		TLegDataPart part;
 		part.name = p.stem().string();
 		part.has_people = true;
-		part.scans = readRangeScans(p.string());
+		part.scans = io::readRangeScans(p.string());
 		const std::string csv = (p.parent_path() / (p.stem().string() + ".scans.csv")).string();
 		part.annotations = readLegAnnotations(csv);
 		if (part.annotations.size() != part.scans.size())
@@ -122,7 +90,7 @@ std::vector<TLegDataPart> loadLegDataset(const std::string& dir)
 	for (const auto& p : filesMatching(dir, "negative_", ""))
 	{
 		std::map<std::string, TLegDataPart> bySensor;
-		for (const auto& s : readRangeScans(p.string()))
+		for (const auto& s : io::readRangeScans(p.string()))
 		{
 			auto& part = bySensor[s->sensorLabel];
 			part.name = p.stem().string() + "/" + s->sensorLabel;

@@ -89,54 +89,85 @@ const char* legFeatureName(size_t k)
 	return k < kLegFeatureCount ? names[k] : "?";
 }
 
-TLegFeatures legFeatures(const std::vector<TScanCluster>& clusters, size_t k,
-						 const mrpt::obs::CObservation2DRangeScan& scan)
+namespace
 {
-	const TScanCluster& cluster = clusters.at(k);
-	const auto& pts = cluster.points;
-	const size_t n = pts.size();
-	const TPoint2D& c = cluster.centroid;
-
-	constexpr double kMaxNeighbour_m = 3.0;
-	constexpr double kCrowd_m = 1.0;
-	double neighbour = kMaxNeighbour_m, neighbourWidth = 0;
+/** The nearest other cluster (centroid distance, capped at 3 m, and its end-to-end
+ * width) and how many clusters have their centroid within 1 m. */
+struct TNeighbourhood
+{
+	double nearest_m = 3.0, nearest_width_m = 0;
 	int crowd = 0;
+};
+
+TNeighbourhood neighbourhood(const std::vector<TScanCluster>& clusters, size_t k)
+{
+	constexpr double kCrowd_m = 1.0;
+	const TPoint2D& c = clusters[k].centroid;
+	TNeighbourhood out;
 	for (size_t j = 0; j < clusters.size(); ++j)
 	{
 		if (j == k) continue;
 		const double d = distance(c, clusters[j].centroid);
-		crowd += d < kCrowd_m;
-		if (d < neighbour)
+		out.crowd += d < kCrowd_m;
+		if (d < out.nearest_m)
 		{
-			neighbour = d;
-			neighbourWidth = distance(clusters[j].points.front(), clusters[j].points.back());
+			out.nearest_m = d;
+			out.nearest_width_m = distance(clusters[j].points.front(), clusters[j].points.back());
 		}
 	}
+	return out;
+}
 
+/** Standard deviation of the points' distances from the centroid `c`. */
+double spreadStdDev_m(const std::vector<TPoint2D>& pts, const TPoint2D& c)
+{
 	double var = 0;
 	for (const auto& p : pts) var += (p.x - c.x) * (p.x - c.x) + (p.y - c.y) * (p.y - c.y);
-	const double stdDev = n > 1 ? std::sqrt(var / static_cast<double>(n - 1)) : 0.0;
+	return pts.size() > 1 ? std::sqrt(var / static_cast<double>(pts.size() - 1)) : 0.0;
+}
 
+/** Mean distance of the points from their coordinate-wise median. */
+double meanDeviationFromMedian_m(const std::vector<TPoint2D>& pts)
+{
 	std::vector<double> xs, ys;
 	for (const auto& p : pts) xs.push_back(p.x), ys.push_back(p.y);
 	const TPoint2D median{medianOf(xs), medianOf(ys)};
 	double medianDev = 0;
 	for (const auto& p : pts) medianDev += distance(p, median);
-	medianDev /= static_cast<double>(n);
+	return medianDev / static_cast<double>(pts.size());
+}
 
-	const auto [circularity, radius] = circleFit(pts, c);
+/** Length of the polyline through the points and the standard deviation of its steps. */
+struct TContour
+{
+	double length_m = 0, regularity_m = 0;
+};
 
-	double length = 0, stepSq = 0;
-	for (size_t i = 1; i < n; ++i)
+TContour contour(const std::vector<TPoint2D>& pts)
+{
+	TContour out;
+	double stepSq = 0;
+	for (size_t i = 1; i < pts.size(); ++i)
 	{
 		const double d = distance(pts[i], pts[i - 1]);
-		length += d;
+		out.length_m += d;
 		stepSq += d * d;
 	}
-	const double steps = static_cast<double>(std::max<size_t>(1, n - 1));
-	const double meanStep = length / steps;
-	const double regularity = std::sqrt(std::max(0.0, stepSq / steps - meanStep * meanStep));
+	const double steps = static_cast<double>(std::max<size_t>(1, pts.size() - 1));
+	const double meanStep = out.length_m / steps;
+	out.regularity_m = std::sqrt(std::max(0.0, stepSq / steps - meanStep * meanStep));
+	return out;
+}
 
+/** Mean over consecutive point triples of the circumcircle curvature and of the turning angle. */
+struct TBending
+{
+	double curvature_per_m = 0, angle_rad = 0;
+};
+
+TBending meanBending(const std::vector<TPoint2D>& pts)
+{
+	const size_t n = pts.size();
 	double curvature = 0, angleDiff = 0;
 	for (size_t i = 1; i + 1 < n; ++i)
 	{
@@ -147,27 +178,41 @@ TLegFeatures legFeatures(const std::vector<TScanCluster>& clusters, size_t k,
 		angleDiff += std::abs(std::atan2(cross, (b.x - a.x) * (d.x - b.x) + (b.y - a.y) * (d.y - b.y)));
 	}
 	const double triples = static_cast<double>(std::max<size_t>(1, n - 2));
+	return {curvature / triples, angleDiff / triples};
+}
+}  // namespace
 
+TLegFeatures legFeatures(const std::vector<TScanCluster>& clusters, size_t k,
+						 const mrpt::obs::CObservation2DRangeScan& scan)
+{
+	const TScanCluster& cluster = clusters.at(k);
+	const auto& pts = cluster.points;
+	const size_t n = pts.size();
+	const TPoint2D& c = cluster.centroid;
+	const TNeighbourhood around = neighbourhood(clusters, k);
+	const auto [circularity, radius] = circleFit(pts, c);
+	const TContour outline = contour(pts);
+	const TBending bending = meanBending(pts);
 	const double sx = scan.sensorPose.x(), sy = scan.sensorPose.y();
 	const size_t first = cluster.firstBeam(), last = cluster.lastBeam();
 	return {static_cast<float>(n),
-			static_cast<float>(stdDev),
-			static_cast<float>(medianDev),
+			static_cast<float>(spreadStdDev_m(pts, c)),
+			static_cast<float>(meanDeviationFromMedian_m(pts)),
 			static_cast<float>(distance(pts.front(), pts.back())),
 			static_cast<float>(lineResidual(pts, c)),
 			static_cast<float>(circularity),
 			static_cast<float>(radius),
-			static_cast<float>(length),
-			static_cast<float>(regularity),
-			static_cast<float>(curvature / triples),
-			static_cast<float>(angleDiff / triples),
+			static_cast<float>(outline.length_m),
+			static_cast<float>(outline.regularity_m),
+			static_cast<float>(bending.curvature_per_m),
+			static_cast<float>(bending.angle_rad),
 			static_cast<float>(std::hypot(c.x - sx, c.y - sy)),
 			static_cast<float>(edgeGap(scan, first, -1)),
 			static_cast<float>(edgeGap(scan, last, +1)),
 			static_cast<float>(last - first + 1 - n),
-			static_cast<float>(neighbour),
-			static_cast<float>(neighbourWidth),
-			static_cast<float>(crowd)};
+			static_cast<float>(around.nearest_m),
+			static_cast<float>(around.nearest_width_m),
+			static_cast<float>(around.crowd)};
 }
 
 }  // namespace hslam::dynamic

@@ -28,11 +28,11 @@ TLegOutputLevels runLegFilter(const CDynamicObjectFilter::TOptions& options,
 		const auto t0 = std::chrono::steady_clock::now();
 		const auto& frame = filter.process(*scans[i], poses[i], mrpt::Clock::toDouble(scans[i]->timestamp));
 		out.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-		all[i] = frame.legs;
-		for (size_t k = 0; k < frame.legs.size(); ++k)
+		for (const auto& leg : frame.legs)
 		{
-			if (frame.leg_is_dynamic[k]) dynamicOnly[i].push_back(frame.legs[k]);
-			ids[i].push_back({frame.leg_track[k], frame.person_track[k]});
+			all[i].push_back(leg.segment);
+			if (leg.is_dynamic) dynamicOnly[i].push_back(leg.segment);
+			ids[i].push_back({leg.leg_track, leg.person_track});
 		}
 		for (const auto& t : frame.leg_tracks)
 			if (t.state == ETrackState::dynamic) dynamicLegIds.insert(t.id);

@@ -17,12 +17,13 @@ namespace hslam::hwdrivers
 {
 CPioneerSensor::CPioneerSensor() : mrpt::system::COutputLogger("CPioneerSensor")
 {
-	// COutputLogger prints INFO/WARN to std::cout, which is block-buffered when
-	// rawlog-grabber's console goes to a file: link events would show up late.
-	// They go to std::cerr (unbuffered) through a logger callback instead.
-	logging_enable_console_output = false;
-	logRegisterCallback([](std::string_view msg, mrpt::system::VerbosityLevel, std::string_view name,
-						   mrpt::Clock::time_point) { std::cerr << "[" << name << "] " << msg << std::endl; });
+	// COutputLogger prints to the console as for MRPT's own sensors (INFO and
+	// WARN on std::cout, ERROR on std::cerr). std::cout is block-buffered when
+	// rawlog-grabber's console goes to a file, so link events would show up
+	// late: a callback (run after the console output) flushes it.
+	logRegisterCallback([](std::string_view, mrpt::system::VerbosityLevel, std::string_view, mrpt::Clock::time_point) {
+		std::cout.flush();
+	});
 	m_sensorLabel = "PIONEER";
 	setOptions(TOptions());
 }

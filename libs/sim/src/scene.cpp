@@ -182,78 +182,109 @@ void classifyJunctions(TScene& scene)
 }
 }  // namespace
 
-TScene parseSceneText(const std::string& text, const std::string& name)
+namespace
+{
+/** The words of a scene line, comments ('#' to the end) removed. */
+std::vector<std::string> sceneWords(std::string line)
+{
+	if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
+	std::istringstream ls(line);
+	std::vector<std::string> words;
+	for (std::string w; ls >> w;) words.push_back(w);
+	return words;
+}
+
+/** The scene being read and the numbering of its wall chains and furniture. */
+struct TSceneBuilder
 {
 	TScene scene;
+	int chain = 0, furniture = 0;
+};
+
+/** wall, polyline, room and box items (chains of wall segments); false for other kinds. */
+bool addWallItem(TSceneBuilder& b, const std::string& kind, const std::vector<double>& v, const CLineError& err)
+{
+	if (kind == "wall")
+	{
+		requireCount(v, 4, 4, "wall", err);
+		addChain(b.scene, pointList(v, 2, err), false, b.chain++);
+	}
+	else if (kind == "polyline")
+		addChain(b.scene, pointList(v, 2, err), false, b.chain++);
+	else if (kind == "room")
+	{
+		auto pts = pointList(v, 3, err);
+		if (signedArea(pts) < 0) std::reverse(pts.begin(), pts.end());  // CCW: free inside = left
+		addChain(b.scene, pts, true, b.chain++);
+	}
+	else if (kind == "box")
+	{
+		requireCount(v, 4, 5, "box", err);
+		if (!(v[2] > 0 && v[3] > 0)) err.fail("box width and height must be > 0");
+		auto pts = rectangle(v[0], v[1], v[2], v[3], v.size() > 4 ? v[4] : 0.0);
+		std::reverse(pts.begin(), pts.end());  // CW: free outside = left
+		addChain(b.scene, pts, true, b.chain++);
+	}
+	else
+		return false;
+	return true;
+}
+
+/** circle, chair and table items (furniture); false for other kinds. */
+bool addFurnitureItem(TSceneBuilder& b, const std::string& kind, const std::vector<double>& v, const CLineError& err)
+{
+	if (kind == "circle")
+	{
+		requireCount(v, 3, 3, "circle", err);
+		if (!(v[2] > 0)) err.fail("circle radius must be > 0");
+		b.scene.world.addCircle(TCircle{TPoint2D{v[0], v[1]}, v[2], TObjectTag{EObjectKind::furniture, b.furniture++, 0}});
+	}
+	else if (kind == "chair")
+	{
+		requireCount(v, 2, 5, "chair", err);
+		const double size = v.size() > 3 ? v[3] : 0.45, legR = v.size() > 4 ? v[4] : 0.015;
+		if (!(size > 0 && legR > 0 && 2 * legR < size)) err.fail("chair size/leg radius invalid");
+		addLegs(b.scene, rectangle(v[0], v[1], size - 2 * legR, size - 2 * legR, v.size() > 2 ? v[2] : 0.0), legR,
+				b.furniture++);
+	}
+	else if (kind == "table")
+	{
+		requireCount(v, 4, 6, "table", err);
+		const double legR = v.size() > 5 ? v[5] : 0.025;
+		if (!(v[2] > 2 * legR && v[3] > 2 * legR && legR > 0)) err.fail("table size/leg radius invalid");
+		addLegs(b.scene, rectangle(v[0], v[1], v[2] - 2 * legR, v[3] - 2 * legR, v.size() > 4 ? v[4] : 0.0), legR,
+				b.furniture++);
+	}
+	else
+		return false;
+	return true;
+}
+}  // namespace
+
+TScene parseSceneText(const std::string& text, const std::string& name)
+{
+	TSceneBuilder b;
 	std::istringstream in(text);
 	std::string line;
-	int lineNo = 0, chain = 0, furniture = 0;
-	while (std::getline(in, line))
+	for (int lineNo = 1; std::getline(in, line); ++lineNo)
 	{
-		++lineNo;
 		const CLineError err(name, lineNo);
-		if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
-		std::istringstream ls(line);
-		std::vector<std::string> words;
-		for (std::string w; ls >> w;) words.push_back(w);
+		const std::vector<std::string> words = sceneWords(line);
 		if (words.empty()) continue;
 		const std::string& kind = words[0];
 		if (kind == "person")
 		{
-			parsePerson(scene, words, err);
+			parsePerson(b.scene, words, err);
 			continue;
 		}
 		std::vector<double> v;
 		for (size_t k = 1; k < words.size(); ++k) v.push_back(parseNumber(words[k], err));
-		if (kind == "wall")
-		{
-			requireCount(v, 4, 4, "wall", err);
-			addChain(scene, pointList(v, 2, err), false, chain++);
-		}
-		else if (kind == "polyline")
-			addChain(scene, pointList(v, 2, err), false, chain++);
-		else if (kind == "room")
-		{
-			auto pts = pointList(v, 3, err);
-			if (signedArea(pts) < 0) std::reverse(pts.begin(), pts.end());  // CCW: free inside = left
-			addChain(scene, pts, true, chain++);
-		}
-		else if (kind == "box")
-		{
-			requireCount(v, 4, 5, "box", err);
-			if (!(v[2] > 0 && v[3] > 0)) err.fail("box width and height must be > 0");
-			auto pts = rectangle(v[0], v[1], v[2], v[3], v.size() > 4 ? v[4] : 0.0);
-			std::reverse(pts.begin(), pts.end());  // CW: free outside = left
-			addChain(scene, pts, true, chain++);
-		}
-		else if (kind == "circle")
-		{
-			requireCount(v, 3, 3, "circle", err);
-			if (!(v[2] > 0)) err.fail("circle radius must be > 0");
-			scene.world.addCircle(TCircle{TPoint2D{v[0], v[1]}, v[2], TObjectTag{EObjectKind::furniture, furniture++, 0}});
-		}
-		else if (kind == "chair")
-		{
-			requireCount(v, 2, 5, "chair", err);
-			const double size = v.size() > 3 ? v[3] : 0.45, legR = v.size() > 4 ? v[4] : 0.015;
-			if (!(size > 0 && legR > 0 && 2 * legR < size)) err.fail("chair size/leg radius invalid");
-			addLegs(scene, rectangle(v[0], v[1], size - 2 * legR, size - 2 * legR, v.size() > 2 ? v[2] : 0.0), legR,
-					furniture++);
-		}
-		else if (kind == "table")
-		{
-			requireCount(v, 4, 6, "table", err);
-			const double legR = v.size() > 5 ? v[5] : 0.025;
-			if (!(v[2] > 2 * legR && v[3] > 2 * legR && legR > 0)) err.fail("table size/leg radius invalid");
-			addLegs(scene, rectangle(v[0], v[1], v[2] - 2 * legR, v[3] - 2 * legR, v.size() > 4 ? v[4] : 0.0), legR,
-					furniture++);
-		}
-		else
+		if (!addWallItem(b, kind, v, err) && !addFurnitureItem(b, kind, v, err))
 			err.fail("unknown item '" + kind +
 					 "' (expected wall, polyline, room, box, circle, chair, table or person)");
 	}
-	classifyJunctions(scene);
-	return scene;
+	classifyJunctions(b.scene);
+	return std::move(b.scene);
 }
 
 TScene loadSceneFile(const std::string& path)

@@ -65,6 +65,7 @@
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
 
+#include <limits>
 #include <map>
 #include <vector>
 
@@ -78,19 +79,26 @@ struct TBeamRef
 	size_t beam = 0;
 };
 
+/** One accepted leg segment of a scan and what the filter made of it. */
+struct TLegObservation
+{
+	TLegSegment segment;  //!< robot frame
+	int leg_track = 0;  //!< id of its leg track
+	int person_track = 0;  //!< id of its person track
+	bool is_dynamic = false;  //!< its leg track or its person track is dynamic
+	bool in_free_space = false;  //!< motion evidence (see file comment; includes camera cues)
+	bool camera_cue = false;  //!< a camera cue covers it (always false unless camera_cue_evidence)
+	/** On static structure established since (+inf: not; see file comment). */
+	double static_since_s = std::numeric_limits<double>::infinity();
+};
+
 /** Everything the filter knows after one scan. */
 struct TDynamicFrame
 {
 	size_t scan_index = 0;  //!< scans processed before this one
 	double t_s = 0;
 	mrpt::poses::CPose2D robot_pose;  //!< robot pose in the world at the scan
-	std::vector<TLegSegment> legs;  //!< accepted leg segments (robot frame)
-	std::vector<int> leg_track;  //!< per leg: id of its leg track
-	std::vector<int> person_track;  //!< per leg: id of its person track
-	std::vector<bool> leg_is_dynamic;  //!< per leg
-	std::vector<bool> leg_in_free_space;  //!< per leg: motion evidence (see file comment; includes camera cues)
-	std::vector<bool> leg_camera_cue;  //!< per leg: a camera cue covers it (empty unless camera_cue_evidence)
-	std::vector<double> leg_static_since_s;  //!< per leg: on static structure established since (+inf: not; see file comment)
+	std::vector<TLegObservation> legs;  //!< accepted leg segments, with their tracks and evidence
 	std::vector<bool> beam_is_dynamic;  //!< per beam: hits a confirmed dynamic object
 	/** Earlier beams that hit a track confirmed now (see file comment). */
 	std::vector<TBeamRef> retro_clear_beams;
@@ -186,19 +194,23 @@ class CDynamicObjectFilter
 	const TOptions& options() const { return m_options; }
 
    private:
-	/** Person observations (world) and, per leg, the observation it belongs to. */
-	void pairLegs(const std::vector<mrpt::math::TPoint2D>& legsWorld, std::vector<mrpt::math::TPoint2D>& persons,
+	/** Person observations (world positions) and, per leg, the observation it belongs to. */
+	void pairLegs(const std::vector<mrpt::math::TPoint2D>& legsWorld, std::vector<TTrackObservation>& persons,
 				  std::vector<int>& personOfLeg) const;
+	/** Per leg of m_frame: its tracker observation (world position, free-space
+	 * and static-world evidence, classifier probability). */
+	std::vector<TTrackObservation> legObservations(const std::vector<mrpt::math::TPoint2D>& legsWorld,
+												   const mrpt::poses::CPose2D& sensorPose, double t_s, bool useEvidence);
 	void buildMask(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& robotPose);
 	void collectLateExclusions(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose2D& robotPose);
 	/** Pairs this scan's legs into people, updates the person tracker with
-	 * their evidence, and fills m_frame.person_track and leg_is_dynamic. */
-	void updatePersonTracks(const std::vector<mrpt::math::TPoint2D>& legsWorld, const std::vector<double>& legProbability,
-							const mrpt::poses::CPose2D& sensorPose, double t_s, bool useEvidence);
+	 * their evidence, and fills person_track and is_dynamic of m_frame's legs. */
+	void updatePersonTracks(const std::vector<mrpt::math::TPoint2D>& legsWorld, const mrpt::poses::CPose2D& sensorPose,
+							double t_s, bool useEvidence);
 	/** Radius of the disc around person track `t` whose beams are masked. */
 	double maskRadius(const TTrack& t) const;
 	bool seenFreeBefore(const mrpt::math::TPoint2D& legWorld, const mrpt::poses::CPose2D& sensorPose) const;
-	/** Legs covered by a camera cue get motion evidence (leg_camera_cue, leg_in_free_space). */
+	/** Legs covered by a camera cue get motion evidence (camera_cue, in_free_space). */
 	void markCameraCueEvidence(double t_s);
 
 	TOptions m_options;

@@ -65,6 +65,7 @@
 #include <mrpt/poses/CPose2D.h>
 
 #include <Eigen/Dense>
+#include <limits>
 #include <vector>
 
 namespace hslam::dynamic
@@ -104,6 +105,27 @@ struct TTrack
 	mrpt::math::TPoint2D position() const { return {x[0], x[1]}; }
 	double speed_mps() const { return std::hypot(x[2], x[3]); }
 	double meanLegProbability() const { return hits > 0 ? leg_probability_sum / hits : 0.0; }
+};
+
+/** One detection given to CKalmanTracker::update: where it is and the
+ * evidence that comes with it. The defaults ask for no evidence (thesis rule). */
+struct TTrackObservation
+{
+	mrpt::math::TPoint2D position_m;  //!< world frame
+	/** Lies where the sensor saw free space before: confirm_free_hits of these
+	 * are needed before a track can be confirmed dynamic (leave true when the
+	 * caller has no such evidence: the requirement is then waived). */
+	bool motion_evidence = true;
+	/** Time since which it lies on established static structure
+	 * (CStaticEvidenceGrid; +infinity: not on it): a track is never confirmed
+	 * on such an observation, nor while more than confirm_max_static_fraction
+	 * of its observations lay on structure established before the track was born. */
+	double static_since_s = std::numeric_limits<double>::infinity();
+	/** The leg classifier's probability (CLegClassifier): a track is confirmed
+	 * only while the mean over its observations is at least
+	 * confirm_min_leg_probability (one scan rarely tells a leg from a chair
+	 * leg; many views of the same object do). */
+	double leg_probability = 1.0;
 };
 
 class CKalmanTracker
@@ -161,27 +183,12 @@ class CKalmanTracker
 	CKalmanTracker() : CKalmanTracker(TOptions()) {}
 	explicit CKalmanTracker(const TOptions& options) : m_options(options) {}
 
-	/** One frame: `observations` are world positions, `sensorPose` the sensor
-	 * pose in the world at time `t_s` (s). Returns, per observation, the id
-	 * of the track it now belongs to (new tracks are created for the rest).
-	 * `motionEvidence` (optional, one flag per observation) marks observations
-	 * lying where the sensor saw free space before; confirm_free_hits of them
-	 * are needed before a track can be confirmed dynamic. `staticSince_s`
-	 * (optional, one per observation) is the time since which the
-	 * observation lies on established static structure (CStaticEvidenceGrid,
-	 * +infinity: not on it): a track is never confirmed on such an
-	 * observation, nor while more than confirm_max_static_fraction of its
-	 * observations lay on structure established before the track was born.
-	 * `legProbability` (optional, one per observation, default 1) is the
-	 * leg classifier's probability (CLegClassifier): a track is confirmed
-	 * only while the mean over its observations is at least
-	 * confirm_min_leg_probability (one scan rarely tells a leg from a chair
-	 * leg; many views of the same object do). */
-	std::vector<int> update(const std::vector<mrpt::math::TPoint2D>& observations,
-							const mrpt::poses::CPose2D& sensorPose, double t_s,
-							const std::vector<bool>* motionEvidence = nullptr,
-							const std::vector<double>* staticSince_s = nullptr,
-							const std::vector<double>* legProbability = nullptr);
+	/** One frame: `observations` (world positions with their evidence, see
+	 * TTrackObservation), `sensorPose` the sensor pose in the world at time
+	 * `t_s` (s). Returns, per observation, the id of the track it now belongs
+	 * to (new tracks are created for the rest). */
+	std::vector<int> update(const std::vector<TTrackObservation>& observations, const mrpt::poses::CPose2D& sensorPose,
+							double t_s);
 
 	/** Live tracks (tentative, dynamic and ghost), after the last update. */
 	const std::vector<TTrack>& tracks() const { return m_tracks; }
@@ -206,11 +213,22 @@ class CKalmanTracker
 				double t_s) const;
 	void updatePolar(TTrack& t, const mrpt::poses::CPose2D& sensorPose) const;
 	TTrack newTrack(const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose, double t_s);
-	void registerHit(TTrack& t, const mrpt::math::TPoint2D& z, const mrpt::poses::CPose2D& sensorPose, bool evidence,
-					 double staticSince_s, double legProbability) const;
+	void registerHit(TTrack& t, const TTrackObservation& z, const mrpt::poses::CPose2D& sensorPose) const;
 	bool significantSpeed(const TTrack& t) const;
 	bool meetsConfirmation(const TTrack& t) const;
+	/** Greedy one-to-one association, nearest (predicted, observed) pairs
+	 * first; corrects and registers the hits. Returns, per observation, its
+	 * track id (-1: none) and sets `trackUsed`. */
+	std::vector<int> associate(const std::vector<TTrackObservation>& observations, const mrpt::poses::CPose2D& sensorPose,
+							   double t_s, std::vector<bool>& trackUsed);
+	/** Missed tracks: null counter; dropped after max_misses (dynamic ones are remembered). */
+	void dropMissedTracks(const std::vector<bool>& trackUsed);
 	void takeOverFromMemory(double t_s, std::vector<int>& owner);
+	/** The remembered track nearest to `z` (or its constant-velocity
+	 * extrapolation) within memory_gate_m; m_memory.end() if none. */
+	std::vector<TMemory>::iterator rememberedNear(const mrpt::math::TPoint2D& z, double t_s);
+	/** A new track for an unassociated observation, or a remembered one re-identified. */
+	TTrack startTrack(const TTrackObservation& z, const mrpt::poses::CPose2D& sensorPose, double t_s);
 
 	TOptions m_options;
 	std::vector<TTrack> m_tracks;

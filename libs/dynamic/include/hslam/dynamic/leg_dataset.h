@@ -30,10 +30,6 @@ struct TLegDataPart
 	std::vector<std::vector<mrpt::math::TPoint2D>> annotations;
 };
 
-/** Every 2D range scan of a rawlog, in file order (observations and
- * sensory frames alike). */
-std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> readRangeScans(const std::string& rawlogPath);
-
 /** Annotated leg centroids per row of a .scans.csv (column annotated_xy). */
 std::vector<std::vector<mrpt::math::TPoint2D>> readLegAnnotations(const std::string& csvPath);
 
