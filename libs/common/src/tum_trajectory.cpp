@@ -13,12 +13,15 @@ namespace hslam::common
 void writeTumFile(const std::string& path, const TTrajectory2D& trajectory)
 {
 	std::string text = "# timestamp tx ty tz qx qy qz qw\n";
-	char line[160];
 	for (const auto& p : trajectory)
 	{
 		const double half = 0.5 * p.pose.phi;
-		std::snprintf(line, sizeof(line), "%.6f %.6f %.6f 0 0 0 %.9f %.9f\n", p.t_s, p.pose.x, p.pose.y,
-					  std::sin(half), std::cos(half));
+		const auto format = [&](char* out, size_t size) {
+			return std::snprintf(out, size, "%.6f %.6f %.6f 0 0 0 %.9f %.9f\n", p.t_s, p.pose.x, p.pose.y,
+								 std::sin(half), std::cos(half));
+		};
+		std::string line(static_cast<size_t>(format(nullptr, 0)) + 1, '\0');  // %f of 1e300 is 300+ characters
+		line.resize(static_cast<size_t>(format(line.data(), line.size())));
 		text += line;
 	}
 	writeTextFileAtomically(path, text);  // a cut-short write never replaces a previous file
