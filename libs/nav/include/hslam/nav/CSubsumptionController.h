@@ -9,8 +9,9 @@
  *    the back-off speed during an escape);
  *  rotation (figure 60): the sector selecting layer's candidates filtered by
  *    target seeking give the heading h_sector; the free target bearing is
- *    h_target; with w_s of eq. 35 the heading is h = w_s h_target +
- *    (1 - w_s) h_sector, and w = k_h h + w_a w_side (w_a: eq. 36), clipped. The
+ *    h_target; with w_s of eq. 35 the heading is h = h_sector +
+ *    w_s wrap(h_target - h_sector) (the blend on the circle), and
+ *    w = k_h h + w_a w_side (w_a: eq. 36), clipped. The
  *    side layer subsumes the heading below its threshold; the forward turning
  *    layer subsumes everything during an escape.
  * Out of a local minimum (no progress towards the target for a while) the
