@@ -18,9 +18,12 @@
 #include <hslam/sim/nav_scenarios.h>
 #include <hslam/sim/scene.h>
 #include "bench_common.h"
+#include "bench_nav_trace.h"
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
+#include <mrpt/config/CConfigFile.h>
 #include <mrpt/core/format.h>
+#include <mrpt/system/filesystem.h>
 
 #include <algorithm>
 #include <cmath>
@@ -51,6 +54,9 @@ struct TNavBenchOptions
 	double mrpt_max_speed_mps = 0;  //!< > 0: MRPT's speed limits to this (TMrptReactiveOptions::max_speed_mps)
 	bool mrpt_sonar = false;  //!< sonar echoes as points for MRPT too (TMrptReactiveOptions::use_sonar)  //!< keep the stock config's backward PTG (TMrptReactiveOptions::forward_ptgs_only)
 	double shortest_path_clearance_m = 0.2;  //!< the collision radius: the shortest path a disc robot can take
+	std::string trace_dir;  //!< non-empty: path PNG per run (+ per-step CSV for ours), bench_nav_trace.h
+	nav::TSubsumptionOptions ours;  //!< our controller's options (--ours-config; default: libs/nav defaults)
+	std::string ours_config;  //!< the INI they came from, empty: defaults
 };
 
 /** One closed-loop run of one method on one pair. */
@@ -60,6 +66,7 @@ struct TNavRun
 	sim::TClosedLoopResult result;
 	double final_distance_m = 0, shortest_m = NAN;
 	mrpt::math::TPose2D start, end;
+	mrpt::math::TPoint2D target;
 	bool success = false;
 };
 
@@ -84,7 +91,11 @@ std::unique_ptr<sim::IClosedLoopController> makeController(const std::string& me
 														   const TNavBenchOptions& o, const std::string& mrptIni,
 														   double clockOrigin_s)
 {
-	if (method == "ours") return std::make_unique<sim::CSubsumptionDriver>(nav::TSubsumptionOptions(), s.targets);
+	if (method == "ours")
+	{
+		if (!o.trace_dir.empty()) return std::make_unique<CTracingSubsumptionDriver>(o.ours, s.targets);
+		return std::make_unique<sim::CSubsumptionDriver>(o.ours, s.targets);
+	}
 	sim::TMrptReactiveOptions m;
 	m.holonomic_method = holonomicMethod(method);
 	m.ptg_cache_dir = o.ptg_cache_dir;
@@ -97,7 +108,7 @@ std::unique_ptr<sim::IClosedLoopController> makeController(const std::string& me
 }
 
 TNavRun runOne(const std::string& method, const sim::TNavScenario& s, const sim::TScene& scene,
-			   const TNavBenchOptions& o, const std::string& mrptIni)
+			   const TNavBenchOptions& o, const std::string& mrptIni, size_t pairIndex)
 {
 	const auto config = sim::closedLoopConfig(s.start, 1);
 	sim::CSimulator simulator(config, scene);
@@ -108,8 +119,15 @@ TNavRun runOne(const std::string& method, const sim::TNavScenario& s, const sim:
 	const auto end = simulator.robot().truePose();
 	run.final_distance_m = std::hypot(end.x - s.targets.back().x, end.y - s.targets.back().y);
 	run.start = s.start;
+	run.target = s.targets.back();
 	run.end = end;
 	run.success = run.result.success() && run.final_distance_m < 0.25;
+	if (!o.trace_dir.empty())
+	{
+		const auto* tracing = dynamic_cast<const CTracingSubsumptionDriver*>(controller.get());
+		writeNavTrace(o.trace_dir, mrpt::format("%02zu-%s-%s", pairIndex + 1, s.world.c_str(), method.c_str()), scene,
+					  s, run.result, tracing ? tracing->steps : std::vector<TNavTraceStep>());
+	}
 	return run;
 }
 
@@ -126,7 +144,8 @@ std::string outcome(const TNavRun& r)
 	else ss << "stopped " << r.final_distance_m << " m from the target";
 	if (r.result.person_contacts) ss << " (" << r.result.person_contacts << " person contacts)";
 	ss << std::setprecision(2) << "  [start " << r.start.x << " " << r.start.y << " " << std::setprecision(0)
-	   << r.start.phi * 180 / M_PI << " deg]";
+	   << r.start.phi * 180 / M_PI << " deg, target " << std::setprecision(2) << r.target.x << " " << r.target.y
+	   << "]";
 	return ss.str();
 }
 
@@ -148,7 +167,7 @@ std::vector<TNavRun> runAll(const std::vector<sim::TNavScenario>& pairs, const T
 		const double shortest = grid->shortestPath_m({s.start.x, s.start.y}, s.targets.back());
 		for (const auto& m : o.methods)
 		{
-			runs.push_back(runOne(m, s, scene, o, mrptIni));
+			runs.push_back(runOne(m, s, scene, o, mrptIni, i));
 			runs.back().shortest_m = shortest;
 			std::cerr << "[" << i + 1 << "/" << pairs.size() << "] " << s.world << " " << m << ": "
 					  << outcome(runs.back()) << "\n";
@@ -275,7 +294,12 @@ void printKeyValues(const std::vector<TNavRun>& runs, const std::vector<std::str
 		for (const auto& w : worlds)
 			std::cout << "nav_success_rate_" << m << "_" << w << "=" << statsOf(runs, m, w).successRate() << "\n";
 	}
-	if (best >= 0) std::cout << "nav_success_rate_mrpt_best=" << best << "\nnav_mrpt_best_method=" << bestMethod << "\n";
+	if (best < 0) return;
+	std::cout << "nav_success_rate_mrpt_best=" << best << "\nnav_mrpt_best_method=" << bestMethod << "\n";
+	// CPU per control step of ours over that of MRPT's best method (the one above).
+	if (std::find(o.methods.begin(), o.methods.end(), "ours") != o.methods.end())
+		std::cout << "nav_cpu_ratio_ours_vs_mrpt_best=" << statsOf(runs, "ours").cpu_ms / statsOf(runs, bestMethod).cpu_ms
+				  << "\n";
 }
 
 TNavBenchOptions parseOptions(int argc, char** argv, bool& help)
@@ -304,6 +328,13 @@ TNavBenchOptions parseOptions(int argc, char** argv, bool& help)
 						   "(default: the laser only)", cmd);
 	TCLAP::ValueArg<double> maxSpeed("", "mrpt-max-speed", "MRPT's robotMax_V_mps and PTG v_max (m/s; default: the config's, stock 1.0)",
 									 false, 0, "m/s", cmd);
+	TCLAP::ValueArg<std::string> trace("", "trace", "write DIR/NN-world-method.png (path over the world; ours: coloured by "
+									   "the layer that steered) and, for ours, .csv (every control step)",
+									   false, "", "DIR", cmd);
+	TCLAP::ValueArg<std::string> oursConfig("", "ours-config", "our controller's INI (config_ini/nav-subsumption.ini "
+											"format; default: the libs/nav defaults)", false, "", "file.ini", cmd);
+	TCLAP::ValueArg<unsigned> seed("", "seed", "seed of the drawn start/target pairs (default 2016; the U-trap's "
+								   "hand-placed crossings stay)", false, 2016, "N", cmd);
 	TNavBenchOptions o;
 	help = !cmd.parse(argc, argv);
 	o.draw.pairs_per_world = std::max(1, perWorld.getValue());
@@ -314,6 +345,14 @@ TNavBenchOptions parseOptions(int argc, char** argv, bool& help)
 	o.mrpt_raw_scan = rawScan.getValue();
 	o.mrpt_sonar = sonar.getValue();
 	o.mrpt_max_speed_mps = maxSpeed.getValue();
+	o.trace_dir = trace.getValue();
+	o.draw.seed = seed.getValue();
+	o.ours_config = oursConfig.getValue();
+	if (!o.ours_config.empty())
+	{
+		if (!mrpt::system::fileExists(o.ours_config)) throw std::runtime_error(o.ours_config + ": not found");
+		o.ours = nav::TSubsumptionOptions::load(mrpt::config::CConfigFile(o.ours_config));
+	}
 	o.ptg_cache_dir = cache.isSet() ? cache.getValue() : (fs::temp_directory_path() / "hslam-mrpt-ptg-cache").string();
 	// One cache folder per PTG set (MRPT names its grid files by PTG index only).
 	o.ptg_cache_dir += std::string(o.mrpt_reverse ? "/all-ptgs" : "/forward-ptgs") +
@@ -346,7 +385,8 @@ int runNavSuite(int argc, char** argv)
 	std::cout << "Suite nav: " << pairs.size() << " start/target pairs in " << worlds.size() << " worlds, "
 			  << o.methods.size() << " methods, timeout " << o.loop.timeout_s << " s (simulated), control period "
 			  << o.loop.control_period_s << " s, collision radius " << o.loop.collision_radius_m << " m\n"
-			  << "ours: libs/nav defaults (target seeking <= 0.3 m/s, eq. 33); MRPT: " << o.mrpt_config
+			  << "ours: " << (o.ours_config.empty() ? std::string("libs/nav defaults") : o.ours_config)
+			  << " (target seeking <= 0.3 m/s, eq. 33); seed " << o.draw.seed << "; MRPT: " << o.mrpt_config
 			  << " (holonomic parameters as shipped, speed limits "
 			  << (o.mrpt_max_speed_mps > 0 ? mrpt::format("%.2f m/s", o.mrpt_max_speed_mps) : std::string("as shipped"))
 			  << "), P3-DX footprint within the collision disc, "

@@ -33,10 +33,10 @@ void CNavigationLog::finish()
 	m_rawlog.close();
 	const auto dir = std::filesystem::path(m_dir);
 	std::ofstream csv(dir / "path.csv");
-	csv << "t_s,x_m,y_m,phi_deg,v_cmd_mps,w_cmd_deg_s,state,nearest_m,targets_reached\n";
+	csv << "t_s,x_m,y_m,phi_deg,v_cmd_mps,w_cmd_deg_s,state,nearest_m,targets_reached,layer\n";
 	for (const auto& s : m_samples)
 		csv << s.t_s << "," << s.pose.x << "," << s.pose.y << "," << s.pose.phi * 180 / M_PI << "," << s.v_cmd_mps << ","
-			<< s.w_cmd_rad_s * 180 / M_PI << "," << s.state << "," << s.nearest_m << "," << s.targets_reached << "\n";
+			<< s.w_cmd_rad_s * 180 / M_PI << "," << s.state << "," << s.nearest_m << "," << s.targets_reached << "," << s.layer << "\n";
 	if (!csv) throw std::runtime_error((dir / "path.csv").string() + ": write failed");
 	m_map.saveAsBitmapFile((dir / "live_map.png").string());
 	mrpt::io::CFileGZOutputStream gz((dir / "live_map.gridmap.gz").string());

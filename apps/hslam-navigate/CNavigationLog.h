@@ -25,6 +25,7 @@ struct TNavLogSample
 	std::string state;
 	double nearest_m = 0;
 	size_t targets_reached = 0;
+	std::string layer;  //!< the layer that set the rotation (nav::navLayerName)
 };
 
 class CNavigationLog

@@ -152,7 +152,7 @@ TPioneerDriveResult controlLoop(const TPioneerDriveOptions& o, nav::CSubsumption
 		const auto cmd = controller.step(latest.pose, latest.scan.get(), latest.sonar.get(), res.time_s);
 		robot.driver().setVelocity(cmd.v_mps, cmd.w_rad_s);
 		log.sample({res.time_s, latest.pose, cmd.v_mps, cmd.w_rad_s, nav::navStateName(cmd.state), cmd.nearest_m,
-					cmd.targets_reached});
+					cmd.targets_reached, nav::navLayerName(cmd.layer)});
 		res.targets_reached = cmd.targets_reached;
 		if (cmd.state == nav::ENavState::target_reached)
 		{

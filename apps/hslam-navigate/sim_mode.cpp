@@ -53,7 +53,7 @@ class CLoggingDriver : public sim::CSubsumptionDriver
 	{
 		const auto out = CSubsumptionDriver::control(in);
 		m_log.sample({in.t_s, in.pose, last.v_mps, last.w_rad_s, nav::navStateName(last.state), last.nearest_m,
-					  last.targets_reached});
+					  last.targets_reached, nav::navLayerName(last.layer)});
 		return out;
 	}
 

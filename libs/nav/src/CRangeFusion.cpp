@@ -10,13 +10,19 @@ namespace hslam::nav
 CPolarProfile::CPolarProfile(double bin_rad, double maxRange_m)
 	: m_bin(bin_rad), m_maxRange(maxRange_m), m_ranges(static_cast<size_t>(std::ceil(2.0 * M_PI / bin_rad)), maxRange_m)
 {
+	m_cos.resize(m_ranges.size());
+	m_sin.resize(m_ranges.size());
+	for (size_t i = 0; i < m_ranges.size(); ++i) m_cos[i] = std::cos(binAngle(i)), m_sin[i] = std::sin(binAngle(i));
 }
 
 void CPolarProfile::clear() { std::fill(m_ranges.begin(), m_ranges.end(), m_maxRange); }
 
 size_t CPolarProfile::binOf(double angle) const
 {
-	const double a = mrpt::math::wrapTo2Pi(angle);
+	// Angles come in (-pi, pi] or [0, 2 pi) almost always: no fmod then.
+	const double a = angle >= 0 && angle < 2 * M_PI ? angle
+					 : angle < 0 && angle >= -2 * M_PI ? angle + 2 * M_PI
+													   : mrpt::math::wrapTo2Pi(angle);
 	return std::min(m_ranges.size() - 1, static_cast<size_t>(a / m_bin));
 }
 
@@ -39,54 +45,137 @@ double CPolarProfile::minRange(double from, double to) const
 
 double CPolarProfile::corridorFreeDistance(double heading, double halfWidth) const
 {
-	// A bin's nearest point (range r at angle a) blocks the corridor if its
-	// lateral offset from the corridor axis is below halfWidth and it lies ahead.
+	// A bin's nearest point blocks the corridor if its lateral offset from the
+	// corridor axis is below halfWidth and it lies ahead (bin points from the
+	// cached cos/sin: no trigonometry per bin).
+	const double c = std::cos(heading), s = std::sin(heading), hw2 = halfWidth * halfWidth;
 	double free = m_maxRange;
 	for (size_t i = 0; i < m_ranges.size(); ++i)
 	{
 		if (m_ranges[i] >= m_maxRange) continue;
-		const double rel = mrpt::math::wrapToPi(binAngle(i) - heading);
-		const double along = m_ranges[i] * std::cos(rel), lateral = std::abs(m_ranges[i] * std::sin(rel));
-		if (along > 0 && lateral < halfWidth)
-			free = std::min(free, along - std::sqrt(halfWidth * halfWidth - lateral * lateral));
+		const double x = pointX(i), y = pointY(i);
+		const double along = x * c + y * s, lateral = y * c - x * s;
+		if (along > 0 && lateral * lateral < hw2) free = std::min(free, along - std::sqrt(hw2 - lateral * lateral));
 	}
 	return std::max(0.0, free);
 }
 
-CPolarProfile CRangeFusion::fuse(const mrpt::obs::CObservation2DRangeScan* scan,
-								 const mrpt::obs::CObservationRange* sonar) const
+void CPolarProfile::corridorFreeDistances(double step, int n, double halfWidth, std::vector<double>& free) const
 {
-	CPolarProfile p(m_opts.bin_rad, m_opts.max_range_m);
+	free.assign(2 * n + 1, m_maxRange);
+	if (step != m_gridStep || n != m_gridN)
+	{
+		m_gridStep = step, m_gridN = n;
+		m_gridCos.resize(2 * n + 1), m_gridSin.resize(2 * n + 1);
+		for (int k = -n; k <= n; ++k) m_gridCos[k + n] = std::cos(k * step), m_gridSin[k + n] = std::sin(k * step);
+	}
+	const double turns = 2 * M_PI / step;
+	const int turn = static_cast<int>(std::lround(turns));
+	const bool periodic = std::abs(turns - turn) < 1e-9;
+	const double hw2 = halfWidth * halfWidth;
+	auto visit = [&](int k, double x, double y)
+	{
+		if (k < -n || k > n) return;
+		const double along = x * m_gridCos[k + n] + y * m_gridSin[k + n];
+		const double lateral = y * m_gridCos[k + n] - x * m_gridSin[k + n];
+		if (along > 0 && lateral * lateral < hw2)
+			free[k + n] = std::min(free[k + n], std::max(0.0, along - std::sqrt(hw2 - lateral * lateral)));
+	};
+	for (size_t i = 0; i < m_ranges.size(); ++i)
+	{
+		const double r = m_ranges[i];
+		if (r >= m_maxRange) continue;
+		const double x = pointX(i), y = pointY(i);
+		if (!periodic)  // the grid does not close on itself: every heading
+		{
+			for (int k = -n; k <= n; ++k) visit(k, x, y);
+			continue;
+		}
+		// Only headings within asin(halfWidth / r) of the point's bearing can
+		// have it ahead and nearer than halfWidth to the axis.
+		const double a = binAngle(i), window = r > halfWidth ? std::asin(halfWidth / r) : 0.5 * M_PI;
+		const int k0 = static_cast<int>(std::floor((a - window) / step));
+		const int k1 = static_cast<int>(std::ceil((a + window) / step));
+		for (int k = k0; k <= k1; ++k)
+		{
+			visit(k, x, y);  // the same direction one turn either way, if on the grid
+			if (k - turn >= -n) visit(k - turn, x, y);
+			if (k + turn <= n) visit(k + turn, x, y);
+		}
+	}
+}
+
+CPolarProfile CRangeFusion::fuse(const mrpt::obs::CObservation2DRangeScan* scan,
+								 const mrpt::obs::CObservationRange* sonar)
+{
+	auto p = makeProfile();
+	fuseInto(p, scan, sonar);
+	return p;
+}
+
+bool CRangeFusion::laserExplains(const mrpt::obs::CObservationRange::TMeasurement& m) const
+{
+	const auto& sp = m.sensorPose;
+	const double cx = std::cos(sp.yaw), cy = std::sin(sp.yaw), cosHalf = std::cos(0.5 * m_opts.sonar_cone_rad);
+	const double reach = m.sensedDistance + 1e-3 * m_opts.explained_tolerance_mm, reach2 = reach * reach;
+	for (size_t k = 0; k < m_laserX.size(); ++k)
+	{
+		const double dx = m_laserX[k] - sp.x, dy = m_laserY[k] - sp.y, d2 = dx * dx + dy * dy;
+		if (d2 > reach2) continue;
+		const double along = dx * cx + dy * cy;  // inside the cone: along >= |d| cos(half)
+		if (along > 0 && along * along >= d2 * cosHalf * cosHalf) return true;
+	}
+	return false;
+}
+
+void CRangeFusion::fuseInto(CPolarProfile& p, const mrpt::obs::CObservation2DRangeScan* scan,
+							const mrpt::obs::CObservationRange* sonar)
+{
+	p.clear();
+	m_laserX.clear(), m_laserY.clear();
 	if (scan && m_opts.use_laser)
 	{
 		const auto& sp = scan->sensorPose;
 		const size_t n = scan->getScanSize();
-		const double step = n > 1 ? scan->aperture / (n - 1) : 0.0;
+		if (n != m_beamCount || scan->aperture != m_beamAperture || scan->rightToLeft != m_beamRightToLeft)
+		{
+			m_beamCount = n, m_beamAperture = scan->aperture, m_beamRightToLeft = scan->rightToLeft;
+			m_beamCos.resize(n), m_beamSin.resize(n);
+			const double step = n > 1 ? scan->aperture / (n - 1) : 0.0;
+			for (size_t i = 0; i < n; ++i)
+			{
+				const double a = scan->rightToLeft ? -0.5 * scan->aperture + i * step : 0.5 * scan->aperture - i * step;
+				m_beamCos[i] = std::cos(a), m_beamSin[i] = std::sin(a);
+			}
+		}
+		const double cy = std::cos(sp.yaw()), sy = std::sin(sp.yaw());
 		for (size_t i = 0; i < n; ++i)
 		{
 			if (!scan->getScanRangeValidity(i)) continue;
-			const double a = (scan->rightToLeft ? -0.5 * scan->aperture + i * step : 0.5 * scan->aperture - i * step);
 			const double r = scan->getScanRange(i);
-			const double x = sp.x() + r * std::cos(sp.yaw() + a), y = sp.y() + r * std::sin(sp.yaw() + a);
-			p.addPoint(std::atan2(y, x), std::hypot(x, y));
+			const double lx = r * m_beamCos[i], ly = r * m_beamSin[i];
+			const double x = sp.x() + cy * lx - sy * ly, y = sp.y() + sy * lx + cy * ly;
+			p.addPoint(std::atan2(y, x), std::sqrt(x * x + y * y));
+			m_laserX.push_back(x), m_laserY.push_back(y);
 		}
 	}
 	if (sonar && m_opts.use_sonar)
 	{
+		const bool dropExplained = m_opts.drop_explained_sonar && !m_laserX.empty();
 		for (const auto& m : sonar->sensedData)
 		{
 			if (!(m.sensedDistance > 0) || m.sensedDistance >= sonar->maxSensorDistance - 1e-3) continue;
+			if (dropExplained && laserExplains(m)) continue;
 			const auto& sp = m.sensorPose;
 			const double half = 0.5 * m_opts.sonar_cone_rad;
 			for (double a = -half; a <= half + 1e-9; a += 0.5 * m_opts.bin_rad)
 			{
 				const double x = sp.x + m.sensedDistance * std::cos(sp.yaw + a);
 				const double y = sp.y + m.sensedDistance * std::sin(sp.yaw + a);
-				p.addPoint(std::atan2(y, x), std::hypot(x, y));
+				p.addPoint(std::atan2(y, x), std::sqrt(x * x + y * y));
 			}
 		}
 	}
-	return p;
 }
 
 }  // namespace hslam::nav

@@ -20,6 +20,20 @@ const char* navStateName(ENavState s)
 	return "?";
 }
 
+const char* navLayerName(ENavLayer l)
+{
+	switch (l)
+	{
+		case ENavLayer::none: return "none";
+		case ENavLayer::target: return "target";
+		case ENavLayer::sector: return "sector";
+		case ENavLayer::side: return "side";
+		case ENavLayer::forward_turning: return "forward_turning";
+		case ENavLayer::boundary: return "boundary";
+	}
+	return "?";
+}
+
 std::vector<std::string> TSubsumptionOptions::sections()
 {
 	return {"nav_controller",		"nav_fusion",		  "nav_target_seeking",	 "nav_velocity_control",
@@ -65,7 +79,8 @@ CSubsumptionController::CSubsumptionController(const TSubsumptionOptions& o)
 	  m_sectors(o.sector_selecting),
 	  m_side(o.side_avoidance),
 	  m_forwardTurning(o.forward_turning, o.corner_trap),
-	  m_boundary(o.boundary_following)
+	  m_boundary(o.boundary_following),
+	  m_profile(m_fusion.makeProfile())
 {
 }
 
@@ -75,18 +90,23 @@ void CSubsumptionController::setTargets(std::vector<mrpt::math::TPoint2D> target
 	m_boundary.reset();
 }
 
-double CSubsumptionController::rotationCommand(const CPolarProfile& profile, const std::array<TVirtualSonar, 8>& ring,
+double CSubsumptionController::rotationCommand(const std::array<TVirtualSonar, 8>& ring, const TSectorChoice& sectors,
 											   const TTargetSeekingOutput& target, double v_mps,
-											   double nearest_mm) const
+											   double nearest_mm, ENavLayer& layer, double& heading) const
 {
 	const auto side = m_side.evaluate(ring, v_mps);
+	layer = ENavLayer::side;
+	heading = side.w_rad_s / std::max(1e-6, m_opts.controller.heading_gain_per_s);
 	if (side.subsume) return side.w_rad_s;
-	const auto sectors = m_sectors.evaluate(profile, target.bearing_rad, target.distance_m);
 	// Eq. 35: far from everything the free target bearing rules; near obstacles
 	// the clear sector nearest the target (figure 60) does.
 	const double ws = farRangeWeight(nearest_mm);
-	const double heading = sectors.target_clear ? target.bearing_rad
-												: ws * target.bearing_rad + (1.0 - ws) * sectors.chosen_rad;
+	// Blended on the circle (the sector search covers +-180 deg: a linear blend
+	// of -170 and +170 deg would give 0, straight ahead).
+	heading = sectors.target_clear
+				  ? target.bearing_rad
+				  : mrpt::math::wrapToPi(sectors.chosen_rad + ws * mrpt::math::wrapToPi(target.bearing_rad - sectors.chosen_rad));
+	layer = sectors.target_clear ? ENavLayer::target : ENavLayer::sector;
 	const double wa = sideAvoidanceWeight(nearest_mm);  // eq. 36
 	return m_opts.controller.heading_gain_per_s * heading + wa * side.w_rad_s;
 }
@@ -96,19 +116,36 @@ void CSubsumptionController::blendLayers(const CPolarProfile& profile, const TTa
 {
 	const auto ring = virtualSonars(profile, m_opts.controller.virtual_sonar_cone_rad);
 	double v = std::min({seek.v_mps, m_velocityControl.evaluate(ring), 1e-3 * m_opts.controller.max_speed_mm_s});
-	const bool targetClear = m_sectors.evaluate(profile, seek.bearing_rad, seek.distance_m).target_clear;
-	const auto boundary = m_boundary.update(profile, seek.distance_m, targetClear, t_s);
+	const auto sectors = m_sectors.evaluate(profile, seek.bearing_rad, seek.distance_m);
+	const auto boundary = m_boundary.update(profile, seek.distance_m, sectors.target_clear, t_s);
 	const double maxW = m_opts.controller.max_turn_rate_rad_s;
 	if (boundary.active)
 	{
+		m_turnDirection = 0;
 		cmd.v_mps = std::min(v, boundary.v_mps);
 		cmd.w_rad_s = std::clamp(boundary.w_rad_s, -maxW, maxW);
+		cmd.layer = ENavLayer::boundary;
 		return;
 	}
-	cmd.w_rad_s = std::clamp(rotationCommand(profile, ring, seek, v, cmd.nearest_m * 1e3), -maxW, maxW);
+	double heading = 0;
+	cmd.w_rad_s =
+		std::clamp(rotationCommand(ring, sectors, seek, v, cmd.nearest_m * 1e3, cmd.layer, heading), -maxW, maxW);
 	// Figure 59: forward turning subsumes v with 0 when the turn is too sharp.
-	if (!m_forwardTurning.allowsForwardMotion(cmd.w_rad_s / std::max(1e-6, m_opts.controller.heading_gain_per_s)))
-		v = 0;
+	// The heading to steer by decides, not the clipped rate: 60 deg/s / 1.5 per s
+	// stands for 40 deg at most, so the 70 deg rule never fired on the clipped w.
+	if (!m_forwardTurning.allowsForwardMotion(heading))
+	{
+		// A turn in place keeps its direction while the heading lies behind
+		// (beyond 90 deg) on the other side: with the sector search all round,
+		// a heading near 180 deg flips sign as the robot turns, and it would
+		// rock in place (U-trap, docs/nav.md).
+		if (m_turnDirection != 0 && heading * m_turnDirection < 0 && std::abs(heading) > 0.5 * M_PI)
+			cmd.w_rad_s = m_turnDirection * maxW;
+		m_turnDirection = cmd.w_rad_s >= 0 ? 1 : -1;
+		v = 0, cmd.turn_in_place = true;
+	}
+	else
+		m_turnDirection = 0;
 	cmd.v_mps = std::max(0.0, v);
 }
 
@@ -117,7 +154,8 @@ TNavCommand CSubsumptionController::step(const mrpt::math::TPose2D& pose,
 										 const mrpt::obs::CObservationRange* sonar, double t_s)
 {
 	TNavCommand cmd;
-	const CPolarProfile profile = m_fusion.fuse(scan, sonar);
+	m_fusion.fuseInto(m_profile, scan, sonar);
+	const CPolarProfile& profile = m_profile;
 	cmd.nearest_m = profile.minRange(-M_PI, M_PI);
 	cmd.targets_reached = m_targets.reachedCount();
 	auto target = m_targets.current();
@@ -145,6 +183,7 @@ TNavCommand CSubsumptionController::step(const mrpt::math::TPose2D& pose,
 		cmd.state = ENavState::escaping;
 		cmd.v_mps = escape.v_mps;
 		cmd.w_rad_s = escape.w_rad_s;
+		cmd.layer = ENavLayer::forward_turning;
 		return cmd;
 	}
 	blendLayers(profile, seek, t_s, cmd);

@@ -9,8 +9,9 @@
  *    the back-off speed during an escape);
  *  rotation (figure 60): the sector selecting layer's candidates filtered by
  *    target seeking give the heading h_sector; the free target bearing is
- *    h_target; with w_s of eq. 35 the heading is h = w_s h_target +
- *    (1 - w_s) h_sector, and w = k_h h + w_a w_side (w_a: eq. 36), clipped. The
+ *    h_target; with w_s of eq. 35 the heading is h = h_sector +
+ *    w_s wrap(h_target - h_sector) (the blend on the circle), and
+ *    w = k_h h + w_a w_side (w_a: eq. 36), clipped. The
  *    side layer subsumes the heading below its threshold; the forward turning
  *    layer subsumes everything during an escape.
  * Out of a local minimum (no progress towards the target for a while) the
@@ -81,12 +82,26 @@ enum class ENavState
 };
 const char* navStateName(ENavState state);
 
+/** Which layer set the rotation of a step (diagnostics: path.csv, hslam-bench nav --trace). */
+enum class ENavLayer
+{
+	none,  //!< stopped (target reached, no target)
+	target,  //!< free target bearing (eq. 35 far from everything)
+	sector,  //!< sector selecting blended with the target bearing (figure 60-61)
+	side,  //!< side obstacle avoidance subsuming the heading (figure 62)
+	forward_turning,  //!< back-off manoeuvre (figure 63)
+	boundary  //!< boundary following out of a local minimum
+};
+const char* navLayerName(ENavLayer layer);
+
 struct TNavCommand
 {
 	double v_mps = 0, w_rad_s = 0;
 	ENavState state = ENavState::no_target;
 	double nearest_m = 0;  //!< nearest fused range from the robot centre
 	size_t targets_reached = 0;
+	ENavLayer layer = ENavLayer::none;  //!< the layer that set w
+	bool turn_in_place = false;  //!< forward turning subsumed v with 0 (heading beyond turn_in_place_above_deg)
 };
 
 class CSubsumptionController
@@ -104,8 +119,9 @@ class CSubsumptionController
 	const TSubsumptionOptions& options() const { return m_opts; }
 
    private:
-	double rotationCommand(const CPolarProfile& profile, const std::array<TVirtualSonar, 8>& ring,
-						   const TTargetSeekingOutput& target, double v_mps, double nearest_mm) const;
+	double rotationCommand(const std::array<TVirtualSonar, 8>& ring, const TSectorChoice& sectors,
+						   const TTargetSeekingOutput& target, double v_mps, double nearest_mm,
+						   ENavLayer& layer, double& heading_rad) const;
 	/** (v, w) of the layers below the forward turning layer. */
 	void blendLayers(const CPolarProfile& profile, const TTargetSeekingOutput& seek, double t_s, TNavCommand& cmd);
 
@@ -118,6 +134,8 @@ class CSubsumptionController
 	CForwardTurningLayer m_forwardTurning;
 	CBoundaryFollowingLayer m_boundary;
 	CTargetSequence m_targets;
+	CPolarProfile m_profile;  //!< this step's fused ranges (kept: no allocation per step)
+	int m_turnDirection = 0;  //!< +1 / -1 while turning in place (forward turning), else 0
 };
 
 }  // namespace hslam::nav
