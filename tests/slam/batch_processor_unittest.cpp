@@ -200,3 +200,35 @@ TEST(BatchProcessor, OdometryGapCommentMeansUnknownMotion)
 	EXPECT_NEAR(trajectory[2].pose.x, 1.0, 1e-9);  // unknown motion: pose kept, not invented
 	EXPECT_NEAR(trajectory[3].pose.x, 2.0, 1e-9);
 }
+
+TEST(BatchProcessor, AFailedOutputIsNamedAndLeavesNoPartialFile)
+{
+	// pose_plot.png cannot be renamed into place (a non-empty folder holds its
+	// name): the run must fail naming it, keep the outputs written before it
+	// complete, and leave no temporary file behind.
+	hslam::testing::CTempDir dir;
+	std::filesystem::create_directories(dir.file("out/pose_plot.png"));
+	std::ofstream(dir.file("out/pose_plot.png/keep.txt")) << "not ours";
+	slam::TBatchRequest request;
+	request.config_file = kDefaultIni;
+	request.input_rawlog = kSample;
+	request.output_dir = dir.file("out");
+	request.overwrite = true;
+	request.show_progress = false;
+	std::ostringstream out, err;
+	std::string message;
+	try
+	{
+		slam::CBatchProcessor(request, out, err).run();
+	}
+	catch (const std::exception& e)
+	{
+		message = e.what();
+	}
+	EXPECT_NE(message.find("pose_plot.png: write failed or cut short"), std::string::npos) << message;
+	const auto trajectory = common::readTumFile(dir.file("out/trajectory.tum"));  // written before the plot
+	EXPECT_GT(trajectory.size(), 200u);
+	for (const auto& f : std::filesystem::recursive_directory_iterator(dir.file("out")))
+		EXPECT_EQ(f.path().filename().string().rfind(".hslam-tmp-", 0), std::string::npos) << f.path();
+	EXPECT_TRUE(std::filesystem::exists(dir.file("out/pose_plot.png/keep.txt")));
+}

@@ -107,6 +107,19 @@ Eigen::Matrix3d alignmentCovariance(const Reference& reference, size_t count, Po
 			cov.topLeftCorner<2, 2>() += cap2 * tr.eigenvectors().col(i) * tr.eigenvectors().col(i).transpose();
 	return cov;
 }
+
+/** alignmentCovariance() for current points held in an MRPT point map. */
+template <class Reference>
+Eigen::Matrix3d mapAlignmentCovariance(const Reference& reference, const mrpt::maps::CSimplePointsMap& current,
+									   const mrpt::poses::CPose2D& pose, const TGeometricCovarianceOptions& o,
+									   size_t* matchedPoints)
+{
+	const auto& xs = current.getPointsBufferRef_x();
+	const auto& ys = current.getPointsBufferRef_y();
+	return alignmentCovariance(
+		reference, current.size(), [&](size_t k) { return mrpt::math::TPoint2D(xs[k], ys[k]); }, pose, o,
+		matchedPoints);
+}
 }  // namespace
 
 Eigen::Matrix3d geometricAlignmentCovariance(const mrpt::maps::CSimplePointsMap& reference,
@@ -114,11 +127,7 @@ Eigen::Matrix3d geometricAlignmentCovariance(const mrpt::maps::CSimplePointsMap&
 											 const mrpt::poses::CPose2D& pose,
 											 const TGeometricCovarianceOptions& o, size_t* matchedPoints)
 {
-	const auto& xs = current.getPointsBufferRef_x();
-	const auto& ys = current.getPointsBufferRef_y();
-	return alignmentCovariance(
-		TMrptReference{reference}, current.size(), [&](size_t k) { return mrpt::math::TPoint2D(xs[k], ys[k]); },
-		pose, o, matchedPoints);
+	return mapAlignmentCovariance(TMrptReference{reference}, current, pose, o, matchedPoints);
 }
 
 Eigen::Matrix3d geometricAlignmentCovariance(const mrpt::maps::CSimplePointsMap& reference,
@@ -135,11 +144,7 @@ Eigen::Matrix3d geometricAlignmentCovariance(const CPointIndex2D& reference,
 											 const mrpt::poses::CPose2D& pose,
 											 const TGeometricCovarianceOptions& o, size_t* matchedPoints)
 {
-	const auto& xs = current.getPointsBufferRef_x();
-	const auto& ys = current.getPointsBufferRef_y();
-	return alignmentCovariance(
-		TIndexReference{reference}, current.size(),
-		[&](size_t k) { return mrpt::math::TPoint2D(xs[k], ys[k]); }, pose, o, matchedPoints);
+	return mapAlignmentCovariance(TIndexReference{reference}, current, pose, o, matchedPoints);
 }
 
 }  // namespace hslam::matching
