@@ -11,7 +11,9 @@
 #include <hslam/vision/observation_image.h>
 #include <mrpt/obs/CObservationImage.h>
 
+#include <map>
 #include <random>
+#include <tuple>
 
 namespace hslam::bench
 {
@@ -41,6 +43,10 @@ cv::Mat renderGrey(const sim::CPinholeCameraSimulator& cam, const sim::CWorld& w
 
 std::vector<TTruthPair> renderedPairs(int width, int height, bool rotate, int pairs, uint64_t seed)
 {
+	// The FOE rows and the timing rows use the same pairs: render each set once (cv::Mat copies share the pixels).
+	static std::map<std::tuple<int, int, bool, int, uint64_t>, std::vector<TTruthPair>> rendered;
+	const auto key = std::make_tuple(width, height, rotate, pairs, seed);
+	if (const auto it = rendered.find(key); it != rendered.end()) return it->second;
 	sim::TCameraSimOptions o;
 	o.enabled = true;
 	o.intrinsics.width_px = width;
@@ -63,6 +69,7 @@ std::vector<TTruthPair> renderedPairs(int width, int height, bool rotate, int pa
 		out.push_back({renderGrey(cam, world, p0, noise), renderGrey(cam, world, p1, noise), yaw,
 					   vision::trueFoeOfRobotMotion(cam.camera(), delta)});
 	}
+	rendered[key] = out;
 	return out;
 }
 

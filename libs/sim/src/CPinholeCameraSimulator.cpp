@@ -27,6 +27,7 @@ struct TSample
 {
 	double grey = 0;
 	ESurface surface = ESurface::none;
+	double lambda = 0;  //!< ray parameter of the hit: the depth (camera z) for a ray with camera z = 1
 };
 
 /** The two horizontal hits of one ray direction (cached along a column). */
@@ -105,15 +106,15 @@ TSample shade(const TRenderContext& c, const double d[3], THorizontal& h)
 			const double z = c.z0_m + h.person.range_m / hlen * d[2];
 			if (z >= 0 && z <= c.o.person_height_m && (!h.wall.hit || h.person.range_m < h.wall.range_m))
 				return {textures::personGrey(std::atan2(h.person.normal.y, h.person.normal.x), z, h.person.tag.group),
-						ESurface::person};
+						ESurface::person, h.person.range_m / hlen};
 		}
 		if (h.wall.hit && h.wall.range_m / hlen < lambdaVertical)
-			return {wallShade(h.wall, c.z0_m + h.wall.range_m / hlen * d[2]), ESurface::wall};
+			return {wallShade(h.wall, c.z0_m + h.wall.range_m / hlen * d[2]), ESurface::wall, h.wall.range_m / hlen};
 	}
-	if (d[2] == 0) return {100.0, ESurface::none};
+	if (d[2] == 0) return {100.0, ESurface::none, 0.0};
 	const double x = c.origin.x + lambdaVertical * d[0], y = c.origin.y + lambdaVertical * d[1];
-	if (d[2] < 0) return {textures::floorGrey(x, y, 3), ESurface::floor};
-	return {0.7 * textures::floorGrey(x, y, 4) + 80.0, ESurface::ceiling};
+	if (d[2] < 0) return {textures::floorGrey(x, y, 3), ESurface::floor, lambdaVertical};
+	return {0.7 * textures::floorGrey(x, y, 4) + 80.0, ESurface::ceiling, lambdaVertical};
 }
 
 /** BGR tint of a surface for colour images. */
@@ -139,15 +140,21 @@ mrpt::obs::CObservation::Ptr CPinholeCameraSimulator::render(const CWorld& world
 	const TRenderContext ctx{world, people, m_options, TPoint2D{cam.x(), cam.y()}, cam.z()};
 	const int W = static_cast<int>(in.ncols), H = static_cast<int>(in.nrows), ss = m_options.supersampling;
 	cv::Mat acc(H, W, m_options.grey ? CV_64FC1 : CV_64FC3, cv::Scalar::all(0));
+	// ss x ss samples per pixel in an N-rooks pattern: one per cell of an ss x ss grid, shifted within its cell so
+	// that all ss^2 samples have distinct columns and distinct rows (sample (i, j) at x = (i + (j + 0.5) / ss) / ss,
+	// y = (j + (i + 0.5) / ss) / ss of the pixel). A texture edge crossing the pixel then changes its value in ss^2
+	// steps instead of ss (a regular ss x ss grid moves edges in steps of 1 / ss px as the camera moves, which the
+	// tracker sees as up to 1 / (2 ss) px of flow error). Every sample column shares its horizontal ray hits.
 	for (int u = 0; u < W; ++u)
-		for (int su = 0; su < ss; ++su)
-		{
-			THorizontal cache;
-			const double xc = (u - 0.5 + (su + 0.5) / ss - in.cx()) / in.fx();
-			for (int v = 0; v < H; ++v)
-				for (int sv = 0; sv < ss; ++sv)
+		for (int i = 0; i < ss; ++i)
+			for (int j = 0; j < ss; ++j)
+			{
+				THorizontal cache;
+				const double xc = (u - 0.5 + (i + (j + 0.5) / ss) / ss - in.cx()) / in.fx();
+				const double dy = -0.5 + (j + (i + 0.5) / ss) / ss;
+				for (int v = 0; v < H; ++v)
 				{
-					const double yc = (v - 0.5 + (sv + 0.5) / ss - in.cy()) / in.fy();
+					const double yc = (v + dy - in.cy()) / in.fy();
 					const double d[3] = {R(0, 0) * xc + R(0, 1) * yc + R(0, 2), R(1, 0) * xc + R(1, 1) * yc + R(1, 2),
 										 R(2, 0) * xc + R(2, 1) * yc + R(2, 2)};
 					const TSample s = shade(ctx, d, cache);
@@ -156,7 +163,7 @@ mrpt::obs::CObservation::Ptr CPinholeCameraSimulator::render(const CWorld& world
 					else
 						acc.at<cv::Vec3d>(v, u) += s.grey * tintOf(s.surface);
 				}
-		}
+			}
 	std::normal_distribution<double> noise(0.0, m_options.noise_grey);
 	acc *= 1.0 / (ss * ss);
 	if (m_options.noise_grey > 0)
@@ -171,6 +178,24 @@ mrpt::obs::CObservation::Ptr CPinholeCameraSimulator::render(const CWorld& world
 	obs->image = mrpt::img::CImage(W, H, m_options.grey ? mrpt::img::CH_GRAY : mrpt::img::CH_RGB);
 	acc.convertTo(obs->image.asCvMatRef(), m_options.grey ? CV_8UC1 : CV_8UC3);
 	return obs;
+}
+
+std::optional<mrpt::math::TPoint3D> CPinholeCameraSimulator::surfacePoint(const CWorld& world,
+																		   const mrpt::math::TPose2D& robot, double u_px,
+																		   double v_px) const
+{
+	const auto& in = m_camera.intrinsics;
+	const mrpt::poses::CPose3D cam = mrpt::poses::CPose3D(robot.x, robot.y, 0, robot.phi, 0, 0) + m_camera.sensorPose;
+	const auto R = cam.getRotationMatrix();
+	const CWorld people = peopleWorld(world, m_options.person_radius_m);
+	const TRenderContext ctx{world, people, m_options, TPoint2D{cam.x(), cam.y()}, cam.z()};
+	const double xc = (u_px - in.cx()) / in.fx(), yc = (v_px - in.cy()) / in.fy();
+	const double d[3] = {R(0, 0) * xc + R(0, 1) * yc + R(0, 2), R(1, 0) * xc + R(1, 1) * yc + R(1, 2),
+						 R(2, 0) * xc + R(2, 1) * yc + R(2, 2)};
+	THorizontal cache;
+	const TSample s = shade(ctx, d, cache);
+	if (s.surface == ESurface::none || !(s.lambda > 0)) return std::nullopt;
+	return mrpt::math::TPoint3D(xc * s.lambda, yc * s.lambda, s.lambda);
 }
 
 }  // namespace hslam::sim

@@ -73,6 +73,40 @@ bool solveLines(const std::vector<const TLine*>& lines, double& x0, double& y0, 
 	return std::isfinite(x0) && std::isfinite(y0);
 }
 
+/** Maximum-likelihood refinement for isotropic end-point noise: iteratively
+ * reweighted least squares on the same lines, each weighted by |flow| / D
+ * (D = distance of the vector from the current FOE), so that its residual is
+ * the distance of the vector's end point from the radial line through the FOE
+ * (px at the vector, not at the FOE), with a Huber weight beyond huber_px.
+ * Unweighted, a short vector far from the FOE counts as much as a long one
+ * near it although its line is D / |flow| times less certain there. */
+void refineMaximumLikelihood(const std::vector<const TLine*>& lines, double huber_px, int iterations, double& x0,
+							 double& y0)
+{
+	for (int it = 0; it < iterations; ++it)
+	{
+		cv::Matx22d N = cv::Matx22d::zeros();
+		cv::Vec2d r(0, 0);
+		for (const TLine* l : lines)
+		{
+			const double s = cv::norm(l->f->flow()) / std::max(1.0, std::hypot(l->f->p0.x - x0, l->f->p0.y - y0));
+			const double endPoint = std::abs(l->a * x0 + l->b * y0 - l->c) * s;
+			const double w = s * s * (endPoint > huber_px ? huber_px / endPoint : 1.0);
+			N(0, 0) += w * l->a * l->a;
+			N(0, 1) += w * l->a * l->b;
+			N(1, 1) += w * l->b * l->b;
+			r[0] += w * l->a * l->c;
+			r[1] += w * l->b * l->c;
+		}
+		N(1, 0) = N(0, 1);
+		if (cv::determinant(N) <= 1e-12 * (N(0, 0) + N(1, 1)) * (N(0, 0) + N(1, 1))) return;
+		const cv::Vec2d x = N.inv() * r;
+		if (!std::isfinite(x[0]) || !std::isfinite(x[1])) return;
+		x0 = x[0];
+		y0 = x[1];
+	}
+}
+
 /** Best RANSAC hypothesis (two lines intersected); false if none. */
 bool ransacFoe(const std::vector<TLine>& lines, const TFoeOptions& o, double& x0, double& y0)
 {
@@ -126,6 +160,13 @@ TFoeEstimate estimateFoe(const std::vector<TFlowVector>& residual, const TFoeOpt
 		inl = inliersOf(lines, x0, y0, o, sign);
 		if (static_cast<int>(inl.size()) < std::max(2, o.min_vectors / 2)) return out;
 		if (!solveLines(inl, x0, y0, conditioning, std_px)) return out;
+	}
+	if (o.ml_iterations > 0)
+	{
+		refineMaximumLikelihood(inl, o.ml_huber_px, o.ml_iterations, x0, y0);
+		inl = inliersOf(lines, x0, y0, o, sign);
+		if (static_cast<int>(inl.size()) < std::max(2, o.min_vectors / 2)) return out;
+		refineMaximumLikelihood(inl, o.ml_huber_px, o.ml_iterations, x0, y0);
 	}
 	inl = inliersOf(lines, x0, y0, o, sign);
 	for (const TLine* l : inl) out.inlier[l->index] = 1;

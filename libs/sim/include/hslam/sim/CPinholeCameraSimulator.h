@@ -11,14 +11,19 @@
  * sizes, a brick pattern on walls, tiles on the floor, "clothes" on people)
  * computed from the world coordinates of the hit by a hash (no state), so
  * the same point looks the same from every pose and Shi-Tomasi corners exist
- * everywhere. Each pixel averages supersampling^2 rays (anti-aliasing), then
- * Gaussian noise. Intrinsics are the thesis camera's by default
+ * everywhere. Each pixel averages supersampling^2 rays in an N-rooks pattern
+ * (every ray in its own sample column and row, so a texture edge moving
+ * across the pixel changes its value in supersampling^2 steps: the area
+ * integration of a real sensor pixel, which sub-pixel tracking relies on),
+ * then Gaussian noise. Intrinsics are the thesis camera's by default
  * (vision::TCameraIntrinsicsOptions); the image is grey (8 bit) or RGB. */
 #pragma once
 
 #include <hslam/sim/ICameraModel.h>
 #include <hslam/vision/camera_geometry.h>
+#include <mrpt/math/TPoint3D.h>
 
+#include <optional>
 #include <string>
 
 namespace hslam::sim
@@ -35,7 +40,7 @@ struct TCameraSimOptions  //!< [camera] of a simulator INI
 	double person_radius_m = 0.2;
 	double person_height_m = 1.75;
 	double max_range_m = 60;
-	int supersampling = 2;  //!< rays per pixel side
+	int supersampling = 4;  //!< rays per pixel side (ss^2 rays per pixel, N-rooks pattern)
 	double noise_grey = 1.0;  //!< sigma of the additive pixel noise (grey levels)
 	int jpeg_quality = 0;  //!< >0: the writer stores RGB images JPEG-compressed at this quality (MRPT CImage)
 
@@ -52,7 +57,7 @@ struct TCameraSimOptions  //!< [camera] of a simulator INI
 		v.real("person_radius_m", person_radius_m, 0.05, 1.0);
 		v.real("person_height_m", person_height_m, 0.2, 3.0);
 		v.real("max_range_m", max_range_m, 1.0, 1000.0);
-		v.integer("supersampling", supersampling, 1, 4);
+		v.integer("supersampling", supersampling, 1, 8);
 		v.real("noise_grey", noise_grey, 0.0, 50.0);
 		v.integer("jpeg_quality", jpeg_quality, 0, 100);
 	}
@@ -67,6 +72,13 @@ class CPinholeCameraSimulator : public ICameraModel
 	/** A CObservationImage (cameraParams, cameraPose = the mounting) seen from robotTruePose. */
 	mrpt::obs::CObservation::Ptr render(const CWorld& world, const mrpt::math::TPose2D& robotTruePose,
 										std::mt19937_64& rng) const override;
+
+	/** The surface point seen through image point (u_px, v_px) (pixel centres
+	 * at whole numbers, as OpenCV) from robotTruePose, in the camera frame (z =
+	 * depth); nullopt where the ray meets nothing. One exact ray, no texture:
+	 * the ground truth of the flow of a tracked corner. */
+	std::optional<mrpt::math::TPoint3D> surfacePoint(const CWorld& world, const mrpt::math::TPose2D& robotTruePose,
+													 double u_px, double v_px) const;
 
 	const vision::TMountedCamera& camera() const { return m_camera; }
 	const TCameraSimOptions& options() const { return m_options; }

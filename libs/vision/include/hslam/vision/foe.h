@@ -18,7 +18,10 @@
  *    is the vector's distance from the FOE: end-point noise of that size
  *    turns a short vector's line far from the FOE by that much; and pointing
  *    away from the FOE, or all towards it when the camera backs up) then
- *    cv::solve(DECOMP_SVD) on the inliers.
+ *    cv::solve(DECOMP_SVD) on the inliers, then ml_iterations refits with
+ *    each line weighted by |flow| / D, so that its residual is the end
+ *    point's distance from the radial line through the FOE (the likelihood
+ *    under end-point noise; Huber beyond ml_huber_px).
  *    Confidence = inlier fraction x sqrt(lambda_min / lambda_max) of the
  *    normal matrix (0 when all lines are parallel, i.e. the FOE is unobservable). */
 #pragma once
@@ -40,6 +43,8 @@ struct TFoeOptions  //!< [vision] keys of the FOE estimators
 	int ransac_iterations = 200;
 	double ransac_inlier_px = 3.0;  //!< distance of the FOE from a vector's line ...
 	double ransac_inlier_noise_px = 0.3;  //!< ... plus this end-point noise x (distance to the FOE / vector length)
+	int ml_iterations = 10;  //!< end-point-weighted refits after RANSAC (0 = off: plain least squares)
+	double ml_huber_px = 0.05;  //!< end-point distance beyond which a vector's weight falls (Huber)
 	int min_vectors = 8;  //!< fewer usable vectors: no FOE
 	int seed = 1;  //!< RANSAC sampling (deterministic)
 
@@ -56,6 +61,8 @@ struct TFoeOptions  //!< [vision] keys of the FOE estimators
 		v.integer("ransac_iterations", ransac_iterations, 1, 100000);
 		v.real("ransac_inlier_px", ransac_inlier_px, 0.01, 100.0);
 		v.real("ransac_inlier_noise_px", ransac_inlier_noise_px, 0.0, 10.0);
+		v.integer("ml_iterations", ml_iterations, 0, 100);
+		v.real("ml_huber_px", ml_huber_px, 0.001, 10.0);
 		v.integer("min_vectors", min_vectors, 2, 10000);
 		v.integer("foe_seed", seed, 0, 1 << 30);
 	}
