@@ -302,6 +302,32 @@ void printKeyValues(const std::vector<TNavRun>& runs, const std::vector<std::str
 				  << "\n";
 }
 
+nav::TSubsumptionOptions loadOursConfig(const std::string& path)
+{
+	if (!mrpt::system::fileExists(path)) throw std::runtime_error(path + ": not found");
+	return nav::TSubsumptionOptions::load(mrpt::config::CConfigFile(path));
+}
+
+/** One cache folder per PTG set (MRPT names its grid files by PTG index only). */
+std::string ptgCacheDir(const TNavBenchOptions& o, const std::string& given)
+{
+	const std::string base = given.empty() ? (fs::temp_directory_path() / "hslam-mrpt-ptg-cache").string() : given;
+	return base + std::string(o.mrpt_reverse ? "/all-ptgs" : "/forward-ptgs") +
+		   (o.mrpt_max_speed_mps > 0 ? mrpt::format("-v%.2f", o.mrpt_max_speed_mps) : std::string());
+}
+
+std::vector<std::string> methodList(const std::string& commaList)
+{
+	std::vector<std::string> out;
+	for (const auto& m : io::splitCsvLine(commaList))
+	{
+		if (m.empty()) continue;
+		if (m != "ours") holonomicMethod(m);  // throws on an unknown name
+		out.push_back(m);
+	}
+	return out;
+}
+
 TNavBenchOptions parseOptions(int argc, char** argv, bool& help)
 {
 	TCLAP::CmdLine cmd("hslam-bench nav: our subsumption controller vs MRPT's reactive navigator (ND, VFF, FullEval) "
@@ -348,24 +374,11 @@ TNavBenchOptions parseOptions(int argc, char** argv, bool& help)
 	o.trace_dir = trace.getValue();
 	o.draw.seed = seed.getValue();
 	o.ours_config = oursConfig.getValue();
-	if (!o.ours_config.empty())
-	{
-		if (!mrpt::system::fileExists(o.ours_config)) throw std::runtime_error(o.ours_config + ": not found");
-		o.ours = nav::TSubsumptionOptions::load(mrpt::config::CConfigFile(o.ours_config));
-	}
-	o.ptg_cache_dir = cache.isSet() ? cache.getValue() : (fs::temp_directory_path() / "hslam-mrpt-ptg-cache").string();
-	// One cache folder per PTG set (MRPT names its grid files by PTG index only).
-	o.ptg_cache_dir += std::string(o.mrpt_reverse ? "/all-ptgs" : "/forward-ptgs") +
-					   (o.mrpt_max_speed_mps > 0 ? mrpt::format("-v%.2f", o.mrpt_max_speed_mps) : std::string());
+	if (!o.ours_config.empty()) o.ours = loadOursConfig(o.ours_config);
+	o.ptg_cache_dir = ptgCacheDir(o, cache.isSet() ? cache.getValue() : std::string());
 	for (const auto& w : io::splitCsvLine(worlds.getValue()))
 		if (!w.empty()) o.worlds.push_back(w);
-	o.methods.clear();
-	for (const auto& m : io::splitCsvLine(methods.getValue()))
-	{
-		if (m.empty()) continue;
-		if (m != "ours") holonomicMethod(m);  // throws on an unknown name
-		o.methods.push_back(m);
-	}
+	o.methods = methodList(methods.getValue());
 	return o;
 }
 }  // namespace

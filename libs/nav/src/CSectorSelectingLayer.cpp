@@ -65,17 +65,10 @@ void CSectorSelectingLayer::findGaps(const CPolarProfile& p, double tx, double t
 	}
 }
 
-TSectorChoice CSectorSelectingLayer::evaluate(const CPolarProfile& profile, double targetBearing,
-											  double targetDistance) const
+void CSectorSelectingLayer::pickClearSides(const std::vector<double>& freeOf, int n, double targetBearing,
+											TSectorChoice& out, double& freeLeft, double& freeRight) const
 {
-	TSectorChoice out;
-	const double halfWidth = 1e-3 * (m_opts.robot_half_width_mm + m_opts.margin_mm);
-	const double need = std::min(1e-3 * m_opts.clear_distance_mm, targetDistance);
-	out.target_clear = profile.corridorFreeDistance(targetBearing, halfWidth) >= need;
-	double bestLeft = -1, bestRight = -1, freeLeft = 0, freeRight = 0;
-	const int n = static_cast<int>(std::floor(m_opts.search_half_angle_rad / m_opts.step_rad + 1e-9));
-	thread_local std::vector<double> freeOf;  // reused: no allocation per step
-	profile.corridorFreeDistances(m_opts.step_rad, n, halfWidth, freeOf);
+	double bestLeft = -1, bestRight = -1;
 	for (int k = 0; k <= n; ++k)
 	{
 		for (const int kk : {k, -k})
@@ -89,6 +82,19 @@ TSectorChoice CSectorSelectingLayer::evaluate(const CPolarProfile& profile, doub
 			if (h <= 0 && score > bestRight) bestRight = score, out.right_rad = h, freeRight = free;
 		}
 	}
+}
+
+TSectorChoice CSectorSelectingLayer::evaluate(const CPolarProfile& profile, double targetBearing,
+											  double targetDistance) const
+{
+	TSectorChoice out;
+	const double halfWidth = 1e-3 * (m_opts.robot_half_width_mm + m_opts.margin_mm);
+	const double need = std::min(1e-3 * m_opts.clear_distance_mm, targetDistance);
+	out.target_clear = profile.corridorFreeDistance(targetBearing, halfWidth) >= need;
+	const int n = static_cast<int>(std::floor(m_opts.search_half_angle_rad / m_opts.step_rad + 1e-9));
+	profile.corridorFreeDistances(m_opts.step_rad, n, halfWidth, m_freeScratch);  // reused: no allocation per step
+	double freeLeft = 0, freeRight = 0;
+	pickClearSides(m_freeScratch, n, targetBearing, out, freeLeft, freeRight);
 	out.any_clear = out.left_rad || out.right_rad;
 	if (out.target_clear)
 	{

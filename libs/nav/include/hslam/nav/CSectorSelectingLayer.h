@@ -98,7 +98,13 @@ class CSectorSelectingLayer
 	double gapHeading(double ex, double ey, double qx, double qy) const;
 
    private:
+	/** The best clear heading on each side (longest free corridor, then
+	 * nearest the target) from the corridor free distances of headings -n..n. */
+	void pickClearSides(const std::vector<double>& freeOf, int n, double targetBearing, TSectorChoice& out,
+						double& freeLeft, double& freeRight) const;
+
 	TSectorSelectingOptions m_opts;
+	mutable std::vector<double> m_freeScratch;  //!< free distance per heading, reused by evaluate()
 };
 
 }  // namespace hslam::nav
