@@ -43,7 +43,7 @@ struct TTileIndexHash
 {
 	size_t operator()(const TTileIndex& t) const
 	{
-		return std::hash<long long>()((static_cast<long long>(t.ix) << 32) ^ static_cast<unsigned>(t.iy));
+		return std::hash<long long>()(static_cast<long long>(static_cast<unsigned long long>(static_cast<long long>(t.ix)) << 32) ^ static_cast<unsigned>(t.iy));
 	}
 };
 
