@@ -70,6 +70,13 @@ void pointLikelihoods(const CMultiResolutionGrid& g, const TPointCloud2D& query,
 }
 }  // namespace
 
+CNegLogTable::CNegLogTable() : m_table(kIntervals + 1)
+{
+	const double floorL = std::exp(-4.5);  // a point beyond 3 sigma counts as 3 sigma
+	for (int i = 0; i <= kIntervals; ++i)
+		m_table[static_cast<size_t>(i)] = -2.0 * std::log(std::max(static_cast<double>(i) / kIntervals, floorL));
+}
+
 CCorrelativeScanMatcher::CCorrelativeScanMatcher(const TOptions& options) : m_options(options) {}
 
 void CCorrelativeScanMatcher::setReference(const TPointCloud2D& referencePoints)
@@ -94,7 +101,7 @@ TCorrelativeMatch CCorrelativeScanMatcher::match(const TPointCloud2D& query, con
 
 TCorrelativeMatch CCorrelativeScanMatcher::match(const TPointCloud2D& rawQuery, const mrpt::math::TPose2D& guess,
 												 const TSearchWindow& window, const TSearchExclusion* exclude,
-												 double minScore) const
+												 double minScore, EMatchOutput output) const
 {
 	TCorrelativeMatch result;
 	const TPointCloud2D query = filteredQuery(rawQuery);
@@ -106,6 +113,7 @@ TCorrelativeMatch CCorrelativeScanMatcher::match(const TPointCloud2D& rawQuery, 
 	const int windowCells = static_cast<int>(std::ceil(window.xy_m / res));
 	const auto rotations = rotateQuery(m_grid, query, guess, halfRotations, step);
 	result.rotations = rotations.size();
+	result.angle_step_rad = step;
 	std::function<bool(int, int, int)> excluded;
 	if (exclude)
 		excluded = [&](int r, int dx, int dy) {
@@ -121,8 +129,13 @@ TCorrelativeMatch CCorrelativeScanMatcher::match(const TPointCloud2D& rawQuery, 
 	result.pose = {guess.x + found.best.dx * res, guess.y + found.best.dy * res,
 				   rotations[static_cast<size_t>(found.best.rotation)].yaw_rad};
 	refine(query, step, result);
-	result.covariance = scoreSurfaceCovariance(query, result.pose, step);
+	if (output == EMatchOutput::pose_and_covariance) result.covariance = scoreSurfaceCovariance(query, result.pose, step);
 	return result;
+}
+
+Eigen::Matrix3d CCorrelativeScanMatcher::covarianceOf(const TPointCloud2D& query, const TCorrelativeMatch& m) const
+{
+	return scoreSurfaceCovariance(filteredQuery(query), m.pose, m.angle_step_rad);
 }
 
 double CCorrelativeScanMatcher::scoreAt(const TPointCloud2D& query, const mrpt::math::TPose2D& pose,
@@ -163,35 +176,72 @@ Eigen::Matrix3d CCorrelativeScanMatcher::scoreSurfaceCovariance(const TPointClou
 {
 	// Olson 2009 IV-C: each point's field value read as exp(-d^2 / 2 sigma^2),
 	// the pose likelihood exp(-chi2 / 2) sampled over a neighbourhood.
-	const int k = static_cast<int>(m_options.covariance_span_cells);
-	const double res = m_grid.resolution_m(), floorL = std::exp(-4.5);
-	std::vector<Eigen::Vector3d> offsets;
-	std::vector<double> chi2;
-	std::vector<double> l;
-	for (int i = -k; i <= k; ++i)
-		for (int j = -k; j <= k; ++j)
-			for (int a = -k; a <= k; ++a)
-			{
-				const Eigen::Vector3d d(i * res, j * res, a * angleStep_rad);
-				pointLikelihoods(m_grid, query, {pose.x + d.x(), pose.y + d.y(), pose.phi + d.z()}, l);
-				double c = 0;
-				for (double v : l) c += -2.0 * std::log(std::max(v, floorL));
-				offsets.push_back(d), chi2.push_back(c);
-			}
+	const int k = static_cast<int>(m_options.covariance_span_cells), n = 2 * k + 1;
+	const double res = m_grid.resolution_m();
+	const std::vector<double> chi2 = scoreSurfaceChi2(query, pose, angleStep_rad, k);
 	const double best = *std::min_element(chi2.begin(), chi2.end());
 	double wsum = 0;
 	Eigen::Vector3d mean = Eigen::Vector3d::Zero();
 	Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
-	for (size_t n = 0; n < offsets.size(); ++n)
-	{
-		const double w = std::exp(-0.5 * (chi2[n] - best));
-		wsum += w, mean += w * offsets[n], second += w * offsets[n] * offsets[n].transpose();
-	}
+	for (int a = 0; a < n; ++a)
+		for (int i = 0; i < n; ++i)
+			for (int j = 0; j < n; ++j)
+			{
+				const Eigen::Vector3d d((i - k) * res, (j - k) * res, (a - k) * angleStep_rad);
+				const double w = std::exp(-0.5 * (chi2[static_cast<size_t>((a * n + i) * n + j)] - best));
+				wsum += w, mean += w * d, second += w * d * d.transpose();
+			}
 	mean /= wsum;
 	Eigen::Matrix3d cov = second / wsum - mean * mean.transpose();
 	// the discretisation itself: a uniform error over half a cell / step
 	cov(0, 0) += res * res / 12, cov(1, 1) += res * res / 12, cov(2, 2) += angleStep_rad * angleStep_rad / 12;
 	return cov;
+}
+
+std::vector<double> CCorrelativeScanMatcher::scoreSurfaceChi2(const TPointCloud2D& query,
+															  const mrpt::math::TPose2D& pose, double angleStep_rad,
+															  int k) const
+{
+	// chi2 of the query at pose + (i res, j res, a step) for i, j, a in [-k, k],
+	// index (a, i, j). The xy offsets are whole cells, so a point's bilinear
+	// weights are the same for all of them: computed once per point and angle.
+	const int n = 2 * k + 1;
+	const double res = m_grid.resolution_m();
+	const CNegLogTable& nll = m_negLog;
+	const uint8_t* cells = m_grid.levelData(0);
+	const ptrdiff_t W = m_grid.width();
+	std::vector<double> chi2(static_cast<size_t>(n * n * n), 0.0);
+	for (int a = 0; a < n; ++a)
+	{
+		const double yaw = pose.phi + (a - k) * angleStep_rad, c = std::cos(yaw), s = std::sin(yaw);
+		double* slice = chi2.data() + static_cast<size_t>(a * n * n);
+		for (const auto& p : query)
+		{
+			const double u = (pose.x + c * p.x - s * p.y - m_grid.originX_m()) / res - 0.5;
+			const double v = (pose.y + s * p.x + c * p.y - m_grid.originY_m()) / res - 0.5;
+			const int i0 = static_cast<int>(std::floor(u)) - k, j0 = static_cast<int>(std::floor(v)) - k;
+			const double fx = u - std::floor(u), fy = v - std::floor(v);
+			const double w00 = (1 - fx) * (1 - fy), w10 = fx * (1 - fy), w01 = (1 - fx) * fy, w11 = fx * fy;
+			const bool inside = i0 >= 0 && j0 >= 0 && i0 + n < m_grid.width() && j0 + n < m_grid.height();
+			for (int i = 0; i < n; ++i)
+				for (int j = 0; j < n; ++j)
+				{
+					const int x = i0 + i, y = j0 + j;
+					double l;
+					if (inside)
+					{
+						const uint8_t* c0 = cells + static_cast<ptrdiff_t>(y) * W + x;
+						l = (w00 * c0[0] + w10 * c0[1] + w01 * c0[W] + w11 * c0[W + 1]) / 255.0;
+					}
+					else
+						l = (w00 * m_grid.value(0, x, y) + w10 * m_grid.value(0, x + 1, y) +
+							 w01 * m_grid.value(0, x, y + 1) + w11 * m_grid.value(0, x + 1, y + 1)) /
+							255.0;
+					slice[i * n + j] += nll(l);
+				}
+		}
+	}
+	return chi2;
 }
 
 }  // namespace hslam::graph

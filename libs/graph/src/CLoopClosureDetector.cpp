@@ -68,7 +68,7 @@ void CLoopClosureDetector::closeSubmap(const CPoseGraph& graph)
 	m_pending.clear();
 }
 
-const CCorrelativeScanMatcher& CLoopClosureDetector::fieldOf(size_t submap)
+const CLoopClosureDetector::TSubmapField& CLoopClosureDetector::fieldOf(size_t submap)
 {
 	for (auto it = m_fieldCache.begin(); it != m_fieldCache.end(); ++it)
 		if (it->first == submap)
@@ -76,9 +76,12 @@ const CCorrelativeScanMatcher& CLoopClosureDetector::fieldOf(size_t submap)
 			m_fieldCache.splice(m_fieldCache.begin(), m_fieldCache, it);
 			return *m_fieldCache.front().second;
 		}
-	auto matcher = std::make_unique<CCorrelativeScanMatcher>(m_options.matcher);
-	matcher->setReference(m_submaps[submap].points);
-	m_fieldCache.emplace_front(submap, std::move(matcher));
+	auto field = std::make_unique<TSubmapField>(TSubmapField{CCorrelativeScanMatcher(m_options.matcher), {}});
+	const auto& points = m_submaps[submap].points;
+	field->matcher.setReference(points);
+	field->points.reserve(points.size());
+	for (const auto& p : points) field->points.insertPointFast(p.x, p.y, 0);
+	m_fieldCache.emplace_front(submap, std::move(field));
 	while (static_cast<int>(m_fieldCache.size()) > m_options.max_cached_fields) m_fieldCache.pop_back();
 	return *m_fieldCache.front().second;
 }

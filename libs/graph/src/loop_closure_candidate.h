@@ -1,7 +1,9 @@
-/* hslam graph (private): a submap to test against the current keyframe. */
+/* hslam graph (private): a submap to test against the current keyframe, and
+ * what is kept of a submap while it is being matched. */
 #pragma once
 
 #include <hslam/graph/CLoopClosureDetector.h>
+#include <mrpt/maps/CSimplePointsMap.h>
 
 namespace hslam::graph
 {
@@ -11,5 +13,14 @@ struct CLoopClosureDetector::TCandidate
 	double distance_m = 0;  //!< current pose to the submap's anchor
 	Eigen::Matrix3d relativeCovariance = Eigen::Matrix3d::Identity();  //!< current vs anchor, world frame
 	TSearchWindow window;
+};
+
+/** A submap's likelihood field and its points as an MRPT map for the ICP
+ * check: both built once when the submap is first matched (the points map
+ * keeps its k-d tree between ICP calls). */
+struct CLoopClosureDetector::TSubmapField
+{
+	CCorrelativeScanMatcher matcher;
+	mrpt::maps::CSimplePointsMap points;
 };
 }  // namespace hslam::graph

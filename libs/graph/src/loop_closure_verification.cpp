@@ -40,28 +40,44 @@ bool reject(TLoopClosure& c, const char* why)
 }
 }  // namespace
 
-bool CLoopClosureDetector::matchAndCheckUniqueness(const CCorrelativeScanMatcher& m, const TCandidate& c,
-													TLoopClosure& out) const
+bool CLoopClosureDetector::matchBest(const CCorrelativeScanMatcher& m, const TCandidate& c, TLoopClosure& out,
+									  TCorrelativeMatch& best) const
 {
 	const auto guess = relativePose(out.anchor_pose, out.query_pose_estimate);
-	const auto best = m.match(m_queryPoints, guess, c.window, nullptr, m_options.min_score);
+	best = m.match(m_queryPoints, guess, c.window, nullptr, m_options.min_score, EMatchOutput::pose_only);
 	out.score = best.score, out.hit_fraction = best.hit_fraction;
 	if (!best.found || best.score < m_options.min_score) return reject(out, "low score");
-	out.relative = best.pose, out.covariance = best.covariance;
+	out.relative = best.pose;
 	if (best.hit_fraction < m_options.min_hit_fraction) return reject(out, "low overlap");
-	const TSearchExclusion near{best.pose, m_options.ambiguity_xy_m, m_options.ambiguity_yaw_rad};
-	const auto second = m.match(m_queryPoints, guess, c.window, &near, m_options.ambiguity_ratio * best.score);
-	if (second.found)
-	{
-		out.second_score = second.score;
-		return reject(out, "ambiguous");
-	}
 	return true;
 }
 
-bool CLoopClosureDetector::refineWithIcp(const TCandidate& c, TLoopClosure& out) const
+bool CLoopClosureDetector::checkUniqueness(const CCorrelativeScanMatcher& m, const TCandidate& c,
+										   const TCorrelativeMatch& best, TLoopClosure& out) const
 {
-	const auto reference = toPointsMap(m_submaps[c.submap].points);
+	const auto guess = relativePose(out.anchor_pose, out.query_pose_estimate);
+	const TSearchExclusion near{best.pose, m_options.ambiguity_xy_m, m_options.ambiguity_yaw_rad};
+	const auto second = m.match(m_queryPoints, guess, c.window, &near, m_options.ambiguity_ratio * best.score,
+								EMatchOutput::pose_only);
+	if (!second.found) return true;
+	out.second_score = second.score;
+	return reject(out, "ambiguous");
+}
+
+bool CLoopClosureDetector::checkConsistency(const TCandidate& c, TLoopClosure& out) const
+{
+	// the correction the closure implies for the current pose, against the chain's uncertainty
+	const auto matched = composePose(out.anchor_pose, out.relative);
+	const Eigen::Vector3d d(matched.x - out.query_pose_estimate.x, matched.y - out.query_pose_estimate.y,
+							mrpt::math::wrapToPi(matched.phi - out.query_pose_estimate.phi));
+	const Eigen::Matrix3d S = c.relativeCovariance + toWorld(out.covariance, out.anchor_pose.phi);
+	out.consistency_chi2 = d.dot(S.ldlt().solve(d));
+	if (out.consistency_chi2 > m_options.consistency_chi2) return reject(out, "inconsistent with odometry chain");
+	return true;
+}
+
+bool CLoopClosureDetector::refineWithIcp(const TSubmapField& field, TLoopClosure& out) const
+{
 	const auto current = toPointsMap(m_queryPoints);
 	mrpt::slam::CICP icp;
 	icp.options.maxIterations = 50;
@@ -69,7 +85,7 @@ bool CLoopClosureDetector::refineWithIcp(const TCandidate& c, TLoopClosure& out)
 	icp.options.thresholdAng = mrpt::DEG2RAD(2.0);
 	icp.options.smallestThresholdDist = 0.02;
 	mrpt::slam::CICP::TReturnInfo info;
-	const auto pdf = icp.Align(&reference, &current, mrpt::poses::CPose2D(out.relative), info);
+	const auto pdf = icp.Align(&field.points, &current, mrpt::poses::CPose2D(out.relative), info);
 	mrpt::poses::CPosePDFGaussian g;
 	g.copyFrom(*pdf);
 	out.icp_goodness = info.goodness;
@@ -102,15 +118,14 @@ TLoopClosure CLoopClosureDetector::verify(const TCandidate& c, size_t node, cons
 	out.relative = relativePose(out.anchor_pose, out.query_pose_estimate);
 	if (static_cast<int>(m_queryPoints.size()) < m_options.min_query_points)
 		return reject(out, "too few points"), finish();
-	if (!matchAndCheckUniqueness(fieldOf(c.submap), c, out) || !refineWithIcp(c, out)) return finish();
-	// the correction the closure implies for the current pose, against the chain's uncertainty
-	const auto matched = composePose(out.anchor_pose, out.relative);
-	const Eigen::Vector3d d(matched.x - out.query_pose_estimate.x, matched.y - out.query_pose_estimate.y,
-							mrpt::math::wrapToPi(matched.phi - out.query_pose_estimate.phi));
-	const Eigen::Matrix3d S = c.relativeCovariance + toWorld(out.covariance, out.anchor_pose.phi);
-	out.consistency_chi2 = d.dot(S.ldlt().solve(d));
-	if (out.consistency_chi2 > m_options.consistency_chi2)
-		return reject(out, "inconsistent with odometry chain"), finish();
+	// cheapest tests first (the second search of the uniqueness test costs
+	// as much as the first); a closure must pass all, so the order changes
+	// only which reason a rejected one records
+	const auto& field = fieldOf(c.submap);
+	TCorrelativeMatch best;
+	if (!matchBest(field.matcher, c, out, best) || !refineWithIcp(field, out)) return finish();
+	out.covariance = field.matcher.covarianceOf(m_queryPoints, best);
+	if (!checkConsistency(c, out) || !checkUniqueness(field.matcher, c, best, out)) return finish();
 	out.accepted = true;
 	out.reason = "accepted";
 	return finish();

@@ -12,16 +12,17 @@
  * sequential chain: small after a short loop, large after a long loop or an
  * odometry gap, so a large drift is still searched), clamped to the options.
  *
- * Verification (every test must pass; a rejected candidate keeps its reason):
+ * Verification (every test must pass; a rejected candidate keeps the reason
+ * of the first test it failed; the tests run cheapest first):
  *  1. score: the correlative match's mean likelihood >= min_score and hit
  *     fraction >= min_hit_fraction (overlap), with >= min_query_points points;
- *  2. uniqueness: no other pose in the window (outside a small exclusion)
- *     reaches ambiguity_ratio x the best score (repeated rooms, corridors);
- *  3. ICP agreement: MRPT CICP from the correlative pose converges with
+ *  2. ICP agreement: MRPT CICP from the correlative pose converges with
  *     goodness >= min_icp_goodness and moves less than the agreement limits;
- *  4. consistency: the correction the closure implies for the current pose is
+ *  3. consistency: the correction the closure implies for the current pose is
  *     within the chi2 gate of the relative covariance of the odometry chain
- *     plus the closure's covariance.
+ *     plus the closure's covariance;
+ *  4. uniqueness: no other pose in the window (outside a small exclusion)
+ *     reaches ambiguity_ratio x the best score (repeated rooms, corridors).
  * Then the back-end adds the edge and optimises; the graph's robust step may
  * still drop it (reason "dropped by optimiser"). */
 #pragma once
@@ -139,20 +140,25 @@ class CLoopClosureDetector
 
    private:
 	struct TCandidate;
+	struct TSubmapField;
 	std::vector<TCandidate> candidates(size_t node, const CPoseGraph& graph,
 									   const std::vector<Eigen::Matrix3d>& chainCovariance) const;
 	TLoopClosure verify(const TCandidate& c, size_t node, const CPoseGraph& graph);
-	bool matchAndCheckUniqueness(const CCorrelativeScanMatcher& m, const TCandidate& c, TLoopClosure& out) const;
-	bool refineWithIcp(const TCandidate& c, TLoopClosure& out) const;
+	bool matchBest(const CCorrelativeScanMatcher& m, const TCandidate& c, TLoopClosure& out,
+				   TCorrelativeMatch& best) const;
+	bool checkUniqueness(const CCorrelativeScanMatcher& m, const TCandidate& c, const TCorrelativeMatch& best,
+						 TLoopClosure& out) const;
+	bool checkConsistency(const TCandidate& c, TLoopClosure& out) const;
+	bool refineWithIcp(const TSubmapField& field, TLoopClosure& out) const;
 	void closeSubmap(const CPoseGraph& graph);
-	const CCorrelativeScanMatcher& fieldOf(size_t submap);
+	const TSubmapField& fieldOf(size_t submap);
 
 	TOptions m_options;
 	std::vector<TSubmap> m_submaps;
 	std::vector<std::pair<size_t, TPointCloud2D>> m_pending;  //!< nodes of the open submap
 	TPointCloud2D m_queryPoints;  //!< points of the last added keyframe
 	size_t m_queryNode = 0;
-	std::list<std::pair<size_t, std::unique_ptr<CCorrelativeScanMatcher>>> m_fieldCache;  //!< most recent first
+	std::list<std::pair<size_t, std::unique_ptr<TSubmapField>>> m_fieldCache;  //!< most recent first
 };
 
 /** Covariance of node i relative to node a, in the world frame, from the

@@ -40,6 +40,9 @@ class CMultiResolutionGrid
 		if (ix < 0 || iy < 0 || ix >= m_width || iy >= m_height) return 0;
 		return m_levels[static_cast<size_t>(level)][static_cast<size_t>(iy) * m_width + ix];
 	}
+	/** Row-major cells of `level` (width() x height()), no bounds: for
+	 * callers that have checked their indices once for many reads. */
+	const uint8_t* levelData(int level) const { return m_levels[static_cast<size_t>(level)].data(); }
 	int width() const { return m_width; }
 	int height() const { return m_height; }
 	/** Bytes held by all levels. */
