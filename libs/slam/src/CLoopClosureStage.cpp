@@ -43,8 +43,10 @@ Eigen::Matrix3d CLoopClosureStage::relativeCovariance(const TPoseEstimate& estim
 	R(0, 0) = R(1, 1) = std::cos(prev.phi);
 	R(1, 0) = std::sin(prev.phi), R(0, 1) = -R(1, 0);
 	const double maxVariance = 1.0;  // (1 m)^2 / (1 rad)^2: as weak as an edge across an odometry gap
-	Eigen::Matrix3d cov =
-		positivePart(R.transpose() * (estimate.covariance - m_lastKeyframeCovariance) * R, maxVariance);
+	const Eigen::Matrix3d frontEnd = m_options.edge_covariance == "posterior"
+										 ? estimate.covariance
+										 : Eigen::Matrix3d(estimate.covariance - m_lastKeyframeCovariance);
+	Eigen::Matrix3d cov = positivePart(R.transpose() * frontEnd * R, maxVariance);
 	// Floor in proportion to the motion (see file comment).
 	const auto rel = graph::relativePose(prev, estimate.pose.asTPose());
 	const double travel_m = std::hypot(rel.x, rel.y);

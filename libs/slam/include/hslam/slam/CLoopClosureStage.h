@@ -34,6 +34,7 @@
 #include <hslam/slam/CPoseEstimator.h>
 
 #include <optional>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -43,12 +44,17 @@ namespace hslam::slam
  * plus the detector's keys. */
 struct TLoopClosureStageOptions
 {
-	bool enabled = false;  //!< run the back-end (see hslam-default.ini for the measured effect)
+	bool enabled = true;  //!< run the back-end (see hslam-default.ini for the measured effect)
 	double keyframe_every_m = 0.5;  //!< new keyframe after this estimated travel
 	double keyframe_every_rad = mrpt::DEG2RAD(15.0);  //!< ... or this estimated rotation
 	double relative_xy_std_per_m = 0.05;  //!< floor of an edge's xy sigma per metre of travel
 	double relative_yaw_std_rad_per_m = mrpt::DEG2RAD(1.0);  //!< floor of its yaw sigma per metre
 	double relative_yaw_std_per_rad = 0.05;  //!< ... plus this fraction of the rotation
+	/** "growth": the front-end covariance's growth since the previous keyframe;
+	 * "posterior": the front-end's covariance at this keyframe (its uncertainty
+	 * against the local map the scan was matched to), both in the previous
+	 * keyframe's frame and floored as above. */
+	std::string edge_covariance = "posterior";
 	bool rerender_map = true;  //!< re-insert every scan at its corrected pose at the end
 	graph::TLoopClosureOptions detector;
 
@@ -61,6 +67,7 @@ struct TLoopClosureStageOptions
 		v.real("relative_xy_std_per_m", relative_xy_std_per_m, 0.0, 10.0);
 		v.degrees("relative_yaw_std_deg_per_m", relative_yaw_std_rad_per_m, 0.0, 90.0);
 		v.real("relative_yaw_std_per_rad", relative_yaw_std_per_rad, 0.0, 10.0);
+		v.choice("edge_covariance", edge_covariance, {"growth", "posterior"});
 		v.flag("rerender_map", rerender_map);
 		detector.visit(v);
 	}
