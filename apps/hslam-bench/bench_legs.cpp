@@ -19,10 +19,10 @@
 
 #include <hslam/dynamic/CDynamicObjectFilter.h>
 #include <hslam/dynamic/dynamic_profiles.h>
-#include <hslam/dynamic/leg_dataset.h>
-#include <hslam/dynamic/leg_scoring.h>
-#include <hslam/dynamic/leg_training.h>
-#include <hslam/dynamic/occupied_cells.h>
+#include <hslam/benchdata/leg_dataset.h>
+#include <hslam/benchdata/leg_scoring.h>
+#include <hslam/benchdata/leg_training.h>
+#include <hslam/benchdata/occupied_cells.h>
 #include <hslam/io/rawlog_scans.h>
 #include <hslam/maps/CLaserGridInserter.h>
 #include <hslam/maps/grid_rendering.h>
@@ -46,8 +46,8 @@ namespace
 using mrpt::obs::CObservation2DRangeScan;
 namespace fs = std::filesystem;
 
-using dynamic::TLegsPerScan;
-using TScored = dynamic::TLegScore;
+using benchdata::TLegsPerScan;
+using TScored = benchdata::TLegScore;
 
 using TClassifierPtr = std::shared_ptr<const dynamic::CLegClassifier>;
 
@@ -133,11 +133,11 @@ TTrailResult trailOnStaticLog(const dynamic::CDynamicObjectFilter::TOptions& opt
 	r.person_tracks = static_cast<size_t>(stage.filter()->personTracker().createdTracks());
 	const auto background = medianScan(scans);
 	for (int k = 0; k < 20; ++k) inserter.insert(reference, origin, background);
-	r.static_cells = dynamic::occupiedCells(reference).size();
-	r.occupied_without = dynamic::occupiedCells(without).size();
-	r.occupied_with = dynamic::occupiedCells(with).size();
-	r.trail_without = dynamic::cellsNotIn(without, reference, 1).size();
-	r.trail_with = dynamic::cellsNotIn(with, reference, 1).size();
+	r.static_cells = benchdata::occupiedCells(reference).size();
+	r.occupied_without = benchdata::occupiedCells(without).size();
+	r.occupied_with = benchdata::occupiedCells(with).size();
+	r.trail_without = benchdata::cellsNotIn(without, reference, 1).size();
+	r.trail_with = benchdata::cellsNotIn(with, reference, 1).size();
 
 	saveExclusionComparison(without, with, 3, pngPath);
 	return r;
@@ -185,7 +185,7 @@ void addNegative(TLevel& level, const TLegsPerScan& reported)
  * classifier to use (null: the rules); negative parts use the ICP poses of
  * `negativePoses` (by part index), positive parts a static scanner. */
 TMethodResult evaluateMethod(const std::string& title, const dynamic::CDynamicObjectFilter::TOptions& options,
-							 const std::vector<dynamic::TLegDataPart>& parts,
+							 const std::vector<benchdata::TLegDataPart>& parts,
 							 const std::function<TClassifierPtr(size_t)>& classifierOf,
 							 const std::map<size_t, std::vector<mrpt::poses::CPose2D>>& negativePoses)
 {
@@ -199,16 +199,16 @@ TMethodResult evaluateMethod(const std::string& title, const dynamic::CDynamicOb
 		const auto& part = parts[i];
 		const auto classifier = classifierOf(i);
 		const auto poses = part.has_people ? std::vector<mrpt::poses::CPose2D>(part.scans.size()) : negativePoses.at(i);
-		const auto levels = dynamic::runLegFilter(options, classifier, part.scans, poses);
+		const auto levels = benchdata::runLegFilter(options, classifier, part.scans, poses);
 		const auto &all = levels.detected, &dyn = levels.dynamic, &late = levels.late;
 		r.filter_s += levels.seconds;
 		r.filter_scans += part.scans.size();
 		std::cout << "  " << std::left << std::setw(24) << part.name << std::right << std::setw(6) << part.scans.size();
 		if (part.has_people)
 		{
-			const auto det = dynamic::scoreAgainstAnnotations(all, part.annotations, kMatchRadius_m, options.detector.max_range_m);
-			const auto dy = dynamic::scoreAgainstAnnotations(dyn, part.annotations, kMatchRadius_m, options.detector.max_range_m);
-			const auto lt = dynamic::scoreAgainstAnnotations(late, part.annotations, kMatchRadius_m, options.detector.max_range_m);
+			const auto det = benchdata::scoreAgainstAnnotations(all, part.annotations, kMatchRadius_m, options.detector.max_range_m);
+			const auto dy = benchdata::scoreAgainstAnnotations(dyn, part.annotations, kMatchRadius_m, options.detector.max_range_m);
+			const auto lt = benchdata::scoreAgainstAnnotations(late, part.annotations, kMatchRadius_m, options.detector.max_range_m);
 			addPositive(r.detected, det);
 			addPositive(r.dynamic, dy);
 			addPositive(r.late, lt);
@@ -260,7 +260,7 @@ TTrailResult printTrail(const std::string& title, const dynamic::CDynamicObjectF
 	return trail;
 }
 /** Robot poses of the parts without people (no odometry, no tf): ICP per sensor. */
-std::map<size_t, std::vector<mrpt::poses::CPose2D>> negativePartPoses(const std::vector<dynamic::TLegDataPart>& parts)
+std::map<size_t, std::vector<mrpt::poses::CPose2D>> negativePartPoses(const std::vector<benchdata::TLegDataPart>& parts)
 {
 	std::map<size_t, std::vector<mrpt::poses::CPose2D>> negativePoses;
 	std::cout << "\nRobot motion of the parts without people (no odometry, no tf): ICP per sensor\n";
@@ -320,7 +320,7 @@ int runLegsSuite(const std::string& dataDir, const std::string& outDir, const st
 			  << " (rules), " << learnedIni << " (learned classifier)\n";
 	if (!configFile.empty()) std::cout << "then the [dynamic_objects] keys of " << configFile << "\n";
 
-	const auto parts = dynamic::loadLegDataset(dataDir);
+	const auto parts = benchdata::loadLegDataset(dataDir);
 	const auto negativePoses = negativePartPoses(parts);
 
 	// 1. The rule set (thesis 4.7.1 with the Hokuyo profile).
@@ -330,7 +330,7 @@ int runLegsSuite(const std::string& dataDir, const std::string& outDir, const st
 	// 2. The learned classifier, cross-validated: each part is scored with a
 	// forest that never saw it nor its fold (legs_cross_validation.h).
 	const auto trainOptions = dynamic::loadLegTrainOptions(configFile);
-	const auto folds = dynamic::trainFoldClassifiers(parts, learnedOptions.detector, trainOptions);
+	const auto folds = benchdata::trainFoldClassifiers(parts, learnedOptions.detector, trainOptions);
 	const auto learned = evaluateMethod(
 		"Learned classifier, " + std::to_string(folds.models.size()) + "-fold cross-validated (" + folds.description + ")",
 		learnedOptions, parts, [&](size_t i) { return folds.models[static_cast<size_t>(folds.fold_of_part[i])]; },
@@ -344,7 +344,7 @@ int runLegsSuite(const std::string& dataDir, const std::string& outDir, const st
 	// 3. Static scanner, people walking: trail of occupied cells. The learned
 	// filter uses a forest trained on every labelled part (the demo has none).
 	fs::create_directories(outDir);
-	const auto fullModel = dynamic::trainOnAll(parts, learnedOptions.detector, trainOptions);
+	const auto fullModel = benchdata::trainOnAll(parts, learnedOptions.detector, trainOptions);
 	std::cout << "\ndemo_stationary_simple_environment (static scanner, people walking)\n"
 			  << "  method                    static  occupied w/o / with  trail w/o / with  persons  masked/scan\n";
 	const std::string demo = dataDir + "/demo_stationary_simple_environment.rawlog";

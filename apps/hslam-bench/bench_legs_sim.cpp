@@ -21,7 +21,7 @@
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/dynamic/CDynamicObjectFilter.h>
 #include <hslam/dynamic/dynamic_profiles.h>
-#include <hslam/dynamic/occupied_cells.h>
+#include <hslam/benchdata/occupied_cells.h>
 #include <hslam/io/CGzLineReader.h>
 #include <hslam/io/rawlog_scans.h>
 #include <hslam/maps/CLaserGridInserter.h>
@@ -167,7 +167,7 @@ class CIdentityScore
 size_t peopleOnlyOccupiedCells(const maps::CTiledOccupancyGrid& g, const THitCells& cells)
 {
 	size_t n = 0;
-	for (const auto& c : dynamic::occupiedCells(g))
+	for (const auto& c : benchdata::occupiedCells(g))
 	{
 		if (!cells.person.count({c.gx, c.gy})) continue;
 		bool nearStatic = false;

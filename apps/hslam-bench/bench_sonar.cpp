@@ -28,7 +28,7 @@
 #include "bench_report.h"
 
 #include <hslam/maps/CSonarGridInserter.h>
-#include <hslam/maps/grid_comparison.h>
+#include <hslam/benchdata/grid_comparison.h>
 #include <hslam/maps/grid_rendering.h>
 #include <hslam/sim/CSimulator.h>
 #include <hslam/sonar/CTbfCornerDetector.h>
@@ -182,12 +182,12 @@ TTruthScore scoreAgainstTruth(const maps::TCellBounds& b, const TTruth& truth, C
 		for (int gx = b.gxMin; gx <= b.gxMax; ++gx)
 		{
 			const maps::TGlobalCell c{gx, gy};
-			const maps::ECellClass k = classify(c);
-			if (k == maps::ECellClass::unknown) continue;
+			const benchdata::ECellClass k = classify(c);
+			if (k == benchdata::ECellClass::unknown) continue;
 			// Cells inside closed obstacles or outside the building are not scored.
 			if (!truth.reachable.count(c) && !truth.dilated.count(c)) continue;
 			++s.known;
-			if (k == maps::ECellClass::occupied)
+			if (k == benchdata::ECellClass::occupied)
 			{
 				++s.occupied;
 				occupiedCells.insert(c);
@@ -213,7 +213,7 @@ TTruthScore scoreAgainstTruth(const maps::TCellBounds& b, const TTruth& truth, C
 TTruthScore scoreOurs(const maps::CTiledOccupancyGrid& g, const TTruth& truth)
 {
 	return scoreAgainstTruth(g.observedBounds(), truth, [&](const maps::TGlobalCell& c) {
-		return g.isObserved(c) ? maps::classifyOccupancy(g.occupancyProbability(c), 0.01) : maps::ECellClass::unknown;
+		return g.isObserved(c) ? benchdata::classifyOccupancy(g.occupancyProbability(c), 0.01) : benchdata::ECellClass::unknown;
 	});
 }
 
@@ -224,7 +224,7 @@ TTruthScore scoreMrpt(const mrpt::maps::COccupancyGridMap2D& m, const maps::CTil
 							  geo.cellOf(0, m.getYMin() + 1e-6).gy, geo.cellOf(0, m.getYMax() - 1e-6).gy};
 	return scoreAgainstTruth(b, truth, [&](const maps::TGlobalCell& c) {
 		const auto p = geo.cellCentre(c);
-		return maps::classifyOccupancy(1.0 - m.getPos(static_cast<float>(p.x), static_cast<float>(p.y)), 0.01);
+		return benchdata::classifyOccupancy(1.0 - m.getPos(static_cast<float>(p.x), static_cast<float>(p.y)), 0.01);
 	});
 }
 

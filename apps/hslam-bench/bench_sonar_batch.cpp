@@ -3,7 +3,7 @@
  * sim.rawlog, ground_truth.tum, gt_map.gridmap.gz, corners.csv), default
  * pose estimation, against ground truth:
  *   - map agreement with the ground-truth map (5 cm, resampled onto our
- *     0.1 m cells by maps::resampleOntoOurCells: a cell is occupied if any
+ *     0.1 m cells by benchdata::resampleOntoOurCells: a cell is occupied if any
  *     wall passes through it) for the laser-only map and the laser+sonar maps
  *     (fast model with weights 0.1 / 0.05 / 0.02, standard model 0.1) and
  *     the sonar-only map, all over the same cells (the union of the observed
@@ -25,7 +25,7 @@
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/eval/point_landmark_score.h>
 #include <hslam/io/rawlog_scans.h>
-#include <hslam/maps/grid_comparison.h>
+#include <hslam/benchdata/grid_comparison.h>
 #include <hslam/sim/scene.h>
 #include <hslam/slam/CMappingPipeline.h>
 #include <mrpt/io/CFileGZInputStream.h>
@@ -91,7 +91,7 @@ std::vector<sim::TCircle> staticCircles(const std::string& sample)
 	return sim::loadSceneFile("config_ini/" + scene).world.circles();
 }
 
-void printRow(const std::string& sample, const std::string& name, const maps::TCellAgreement& a, double msPerRing)
+void printRow(const std::string& sample, const std::string& name, const benchdata::TCellAgreement& a, double msPerRing)
 {
 	std::cout << std::left << std::setw(10) << sample << std::setw(26) << name << std::right << std::fixed
 			  << std::setprecision(4) << std::setw(10) << a.fraction() << std::setw(13) << a.fractionOfOursKnown()
@@ -128,14 +128,14 @@ void printMapRows(const std::string& sample, const std::vector<TRunResult>& runs
 {
 	for (const auto& r : runs)
 	{
-		const auto a = maps::compareWithMrptGrid(r.pipeline->grid(), truthGrid);
+		const auto a = benchdata::compareWithMrptGrid(r.pipeline->grid(), truthGrid);
 		printRow(sample, r.name, a, stageMean(r.pipeline->timer(), "sonar_update"));
 		if (&r == &runs[0])
 			totals.laserAgreed += a.agreed, totals.laserCompared += a.compared, totals.laserKnown += a.ours_known;
 		if (&r == &runs[1])
 			totals.fusedAgreed += a.agreed, totals.fusedCompared += a.compared, totals.fusedKnown += a.ours_known;
 	}
-	printRow(sample, "sonar only (fast, w=1)", maps::compareWithMrptGrid(*runs[1].pipeline->sonarOnlyMap(), truthGrid),
+	printRow(sample, "sonar only (fast, w=1)", benchdata::compareWithMrptGrid(*runs[1].pipeline->sonarOnlyMap(), truthGrid),
 			 0.0);
 }
 

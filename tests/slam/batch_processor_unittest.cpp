@@ -4,7 +4,7 @@
 #include <hslam/common/options_io.h>
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/io/CRawlogReader.h>
-#include <hslam/maps/grid_comparison.h>
+#include <hslam/benchdata/grid_comparison.h>
 #include <hslam/slam/CBatchProcessor.h>
 #include <hslam/testing/temp_dir.h>
 #include <hslam/testing/test_paths.h>
@@ -78,9 +78,9 @@ TEST(BatchProcessor, MrptSampleRawlogEndToEnd)
 	for (unsigned y = 0; y < loaded.getSizeY(); ++y)
 		for (unsigned x = 0; x < loaded.getSizeX(); ++x)
 		{
-			const auto c = maps::classifyOccupancy(1.0 - loaded.getCell(x, y), 0.01);
-			occupied += c == maps::ECellClass::occupied;
-			free += c == maps::ECellClass::free;
+			const auto c = benchdata::classifyOccupancy(1.0 - loaded.getCell(x, y), 0.01);
+			occupied += c == benchdata::ECellClass::occupied;
+			free += c == benchdata::ECellClass::free;
 		}
 	EXPECT_GT(occupied, 200u);
 	EXPECT_GT(free, 5 * occupied);

@@ -19,7 +19,7 @@
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/eval/evaluate_trajectory.h>
 #include <hslam/io/CRawlogReader.h>
-#include <hslam/maps/grid_comparison.h>
+#include <hslam/benchdata/grid_comparison.h>
 #include <hslam/maps/grid_rendering.h>
 #include <hslam/slam/CMappingPipeline.h>
 #include <hslam/testing/temp_dir.h>
@@ -119,8 +119,8 @@ TEST(LoopClosureStage, RerenderedMapAgreesWithTheTruthAtLeastAsWellAsTheOnlineMa
 		if (auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(e.observation))
 			inserter.insert(reference, align + truthAt(truth, mrpt::Clock::toDouble(scan->timestamp)), *scan);
 	const auto refGrid = maps::toMrptGrid(reference, reference.observedBounds());
-	const auto before = maps::compareWithMrptGrid(online, refGrid);
-	const auto after = maps::compareWithMrptGrid(pipeline->grid(), refGrid);
+	const auto before = benchdata::compareWithMrptGrid(online, refGrid);
+	const auto after = benchdata::compareWithMrptGrid(pipeline->grid(), refGrid);
 	std::cout << "cell agreement with the true-pose map: online " << before.fraction() << ", re-rendered "
 			  << after.fraction() << "; occupied found " << before.occupiedFound() << " -> " << after.occupiedFound()
 			  << "\n";

@@ -1,10 +1,10 @@
-#include <hslam/maps/grid_comparison.h>
+#include <hslam/benchdata/grid_comparison.h>
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-namespace hslam::maps
+namespace hslam::benchdata
 {
 ECellClass classifyOccupancy(double p, double margin)
 {
@@ -13,7 +13,7 @@ ECellClass classifyOccupancy(double p, double margin)
 	return ECellClass::unknown;
 }
 
-TCellAgreement compareWithMrptGrid(const CTiledOccupancyGrid& ours, const mrpt::maps::COccupancyGridMap2D& mrptGrid,
+TCellAgreement compareWithMrptGrid(const maps::CTiledOccupancyGrid& ours, const mrpt::maps::COccupancyGridMap2D& mrptGrid,
 								   double margin)
 {
 	const double res = ours.geometry().resolution_m();
@@ -24,7 +24,7 @@ TCellAgreement compareWithMrptGrid(const CTiledOccupancyGrid& ours, const mrpt::
 		for (unsigned cx = 0; cx < mrptGrid.getSizeX(); ++cx)
 		{
 			const double x = mrptGrid.idx2x(cx), y = mrptGrid.idx2y(cy);  // cell centre
-			const TGlobalCell g = ours.geometry().cellOf(x, y);
+			const maps::TGlobalCell g = ours.geometry().cellOf(x, y);
 			const ECellClass a = ours.isObserved(g) ? classifyOccupancy(ours.occupancyProbability(g), margin)
 													: ECellClass::unknown;
 			const ECellClass b = classifyOccupancy(1.0 - mrptGrid.getCell(cx, cy), margin);
@@ -40,7 +40,7 @@ TCellAgreement compareWithMrptGrid(const CTiledOccupancyGrid& ours, const mrpt::
 }
 
 mrpt::maps::COccupancyGridMap2D resampleOntoOurCells(const mrpt::maps::COccupancyGridMap2D& reference,
-													 const CTiledGridGeometry& ours, const TCellBounds& cells,
+													 const maps::CTiledGridGeometry& ours, const maps::TCellBounds& cells,
 													 const mrpt::poses::CPose2D& oursInReference, double margin)
 {
 	const double res = ours.resolution_m();
@@ -78,4 +78,4 @@ mrpt::maps::COccupancyGridMap2D resampleOntoOurCells(const mrpt::maps::COccupanc
 	return out;
 }
 
-}  // namespace hslam::maps
+}  // namespace hslam::benchdata

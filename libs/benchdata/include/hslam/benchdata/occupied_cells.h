@@ -7,7 +7,7 @@
 
 #include <vector>
 
-namespace hslam::dynamic
+namespace hslam::benchdata
 {
 /** Observed cells with occupancy probability above `threshold`. */
 std::vector<maps::TGlobalCell> occupiedCells(const maps::CTiledOccupancyGrid& grid, double threshold = 0.5);
@@ -18,4 +18,4 @@ std::vector<maps::TGlobalCell> cellsNotIn(const maps::CTiledOccupancyGrid& grid,
 										  const maps::CTiledOccupancyGrid& reference, int toleranceCells,
 										  double threshold = 0.5);
 
-}  // namespace hslam::dynamic
+}  // namespace hslam::benchdata

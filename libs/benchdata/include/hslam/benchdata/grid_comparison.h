@@ -10,7 +10,7 @@
 
 #include <cstddef>
 
-namespace hslam::maps
+namespace hslam::benchdata
 {
 enum class ECellClass
 {
@@ -39,7 +39,7 @@ struct TCellAgreement
 };
 
 /** Compares every cell of `mrptGrid` (which must use the same resolution). */
-TCellAgreement compareWithMrptGrid(const CTiledOccupancyGrid& ours, const mrpt::maps::COccupancyGridMap2D& mrptGrid,
+TCellAgreement compareWithMrptGrid(const maps::CTiledOccupancyGrid& ours, const mrpt::maps::COccupancyGridMap2D& mrptGrid,
 								   double margin = 0.01);
 
 /** A reference grid of any resolution in its own frame (e.g. a simulator's
@@ -50,8 +50,8 @@ TCellAgreement compareWithMrptGrid(const CTiledOccupancyGrid& ours, const mrpt::
  * otherwise; samples every half reference cell. The result can be passed to
  * compareWithMrptGrid. */
 mrpt::maps::COccupancyGridMap2D resampleOntoOurCells(const mrpt::maps::COccupancyGridMap2D& reference,
-													 const CTiledGridGeometry& ours, const TCellBounds& cells,
+													 const maps::CTiledGridGeometry& ours, const maps::TCellBounds& cells,
 													 const mrpt::poses::CPose2D& oursInReference,
 													 double margin = 0.01);
 
-}  // namespace hslam::maps
+}  // namespace hslam::benchdata

@@ -1,8 +1,8 @@
-#include <hslam/dynamic/occupied_cells.h>
+#include <hslam/benchdata/occupied_cells.h>
 
 #include <cmath>
 
-namespace hslam::dynamic
+namespace hslam::benchdata
 {
 std::vector<maps::TGlobalCell> occupiedCells(const maps::CTiledOccupancyGrid& grid, double threshold)
 {
@@ -36,4 +36,4 @@ std::vector<maps::TGlobalCell> cellsNotIn(const maps::CTiledOccupancyGrid& grid,
 	return out;
 }
 
-}  // namespace hslam::dynamic
+}  // namespace hslam::benchdata
