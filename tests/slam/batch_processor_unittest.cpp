@@ -5,7 +5,7 @@
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/io/CRawlogReader.h>
 #include <hslam/benchdata/grid_comparison.h>
-#include <hslam/slam/CBatchProcessor.h>
+#include <hslam/batch/CBatchProcessor.h>
 #include <hslam/testing/temp_dir.h>
 #include <hslam/testing/test_paths.h>
 #include <mrpt/io/CFileGZInputStream.h>
@@ -209,7 +209,7 @@ TEST(BatchProcessor, AFailedOutputIsNamedAndLeavesNoPartialFile)
 	hslam::testing::CTempDir dir;
 	std::filesystem::create_directories(dir.file("out/pose_plot.png"));
 	std::ofstream(dir.file("out/pose_plot.png/keep.txt")) << "not ours";
-	slam::TBatchRequest request;
+	batch::TBatchRequest request;
 	request.config_file = kDefaultIni;
 	request.input_rawlog = kSample;
 	request.output_dir = dir.file("out");
@@ -219,7 +219,7 @@ TEST(BatchProcessor, AFailedOutputIsNamedAndLeavesNoPartialFile)
 	std::string message;
 	try
 	{
-		slam::CBatchProcessor(request, out, err).run();
+		batch::CBatchProcessor(request, out, err).run();
 	}
 	catch (const std::exception& e)
 	{

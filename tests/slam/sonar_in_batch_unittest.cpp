@@ -11,7 +11,7 @@
 #include <hslam/io/CRawlogReader.h>
 #include <hslam/benchdata/grid_comparison.h>
 #include <hslam/sim/scene.h>
-#include <hslam/slam/CBatchProcessor.h>
+#include <hslam/batch/CBatchProcessor.h>
 #include <hslam/slam/CSonarMappingStage.h>
 #include <hslam/testing/temp_dir.h>
 #include <hslam/testing/test_paths.h>
