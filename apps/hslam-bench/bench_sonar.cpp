@@ -102,14 +102,7 @@ TSimRun simulate(const std::string& name, const std::string& sceneText, const st
 }
 
 // ------------------------------------------------------------------ ground truth
-struct TCellHash
-{
-	size_t operator()(const maps::TGlobalCell& c) const
-	{
-		return std::hash<long long>()((static_cast<long long>(c.gx) << 32) ^ static_cast<unsigned>(c.gy));
-	}
-};
-using TCellSet = std::unordered_set<maps::TGlobalCell, TCellHash>;
+using TCellSet = std::unordered_set<maps::TGlobalCell, maps::TGlobalCellHash>;
 
 struct TTruth
 {
