@@ -1,7 +1,7 @@
 #include "bench_common.h"
 
 #include <hslam/common/tum_trajectory.h>
-#include <hslam/benchdata/grid_comparison.h>
+#include <hslam/benchdata/reference_grid.h>
 #include <hslam/maps/grid_rendering.h>
 #include <hslam/slam/CMappingPipeline.h>
 #include <mrpt/config/CConfigFileMemory.h>

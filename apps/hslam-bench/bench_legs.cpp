@@ -22,7 +22,7 @@
 #include <hslam/benchdata/leg_dataset.h>
 #include <hslam/benchdata/leg_scoring.h>
 #include <hslam/benchdata/leg_training.h>
-#include <hslam/benchdata/occupied_cells.h>
+#include <hslam/benchdata/map_scoring.h>
 #include <hslam/io/rawlog_scans.h>
 #include <hslam/maps/CLaserGridInserter.h>
 #include <hslam/maps/grid_rendering.h>
@@ -136,8 +136,10 @@ TTrailResult trailOnStaticLog(const dynamic::CDynamicObjectFilter::TOptions& opt
 	r.static_cells = benchdata::occupiedCells(reference).size();
 	r.occupied_without = benchdata::occupiedCells(without).size();
 	r.occupied_with = benchdata::occupiedCells(with).size();
-	r.trail_without = benchdata::cellsNotIn(without, reference, 1).size();
-	r.trail_with = benchdata::cellsNotIn(with, reference, 1).size();
+	// Trail = false occupied cells against the static structure (map_scoring.h).
+	const auto staticStructure = benchdata::cellClassesOf(reference);
+	r.trail_without = benchdata::falseOccupiedCells(benchdata::cellClassesOf(without), staticStructure, without.observedBounds()).size();
+	r.trail_with = benchdata::falseOccupiedCells(benchdata::cellClassesOf(with), staticStructure, with.observedBounds()).size();
 
 	saveExclusionComparison(without, with, 3, pngPath);
 	return r;

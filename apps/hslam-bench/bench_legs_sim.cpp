@@ -21,7 +21,7 @@
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/dynamic/CDynamicObjectFilter.h>
 #include <hslam/dynamic/dynamic_profiles.h>
-#include <hslam/benchdata/occupied_cells.h>
+#include <hslam/benchdata/map_scoring.h>
 #include <hslam/io/CGzLineReader.h>
 #include <hslam/io/rawlog_scans.h>
 #include <hslam/maps/CLaserGridInserter.h>
@@ -163,18 +163,16 @@ class CIdentityScore
 	std::map<int, double> m_lastMatch_s;  //!< true person -> time of that match
 };
 
-/** Occupied cells only people ever hit (not within one cell of a static hit). */
+/** Occupied cells only people ever hit: the false occupied cells (map_scoring.h)
+ * against the cells static-structure beams hit, that a person beam hit. */
 size_t peopleOnlyOccupiedCells(const maps::CTiledOccupancyGrid& g, const THitCells& cells)
 {
+	const benchdata::TCellClassOf staticHits = [&cells](const maps::TGlobalCell& c) {
+		return cells.statics.count({c.gx, c.gy}) ? benchdata::ECellClass::occupied : benchdata::ECellClass::unknown;
+	};
 	size_t n = 0;
-	for (const auto& c : benchdata::occupiedCells(g))
-	{
-		if (!cells.person.count({c.gx, c.gy})) continue;
-		bool nearStatic = false;
-		for (int dy = -1; dy <= 1; ++dy)
-			for (int dx = -1; dx <= 1; ++dx) nearStatic |= cells.statics.count({c.gx + dx, c.gy + dy}) > 0;
-		n += !nearStatic;
-	}
+	for (const auto& c : benchdata::falseOccupiedCells(benchdata::cellClassesOf(g), staticHits, g.observedBounds()))
+		n += cells.person.count({c.gx, c.gy});
 	return n;
 }
 

@@ -25,7 +25,7 @@
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/eval/point_landmark_score.h>
 #include <hslam/io/rawlog_scans.h>
-#include <hslam/benchdata/grid_comparison.h>
+#include <hslam/benchdata/map_scoring.h>
 #include <hslam/sim/scene.h>
 #include <hslam/slam/CMappingPipeline.h>
 #include <mrpt/io/CFileGZInputStream.h>
@@ -91,12 +91,12 @@ std::vector<sim::TCircle> staticCircles(const std::string& sample)
 	return sim::loadSceneFile("config_ini/" + scene).world.circles();
 }
 
-void printRow(const std::string& sample, const std::string& name, const benchdata::TCellAgreement& a, double msPerRing)
+void printRow(const std::string& sample, const std::string& name, const benchdata::TMapScore& a, double msPerRing)
 {
 	std::cout << std::left << std::setw(10) << sample << std::setw(26) << name << std::right << std::fixed
-			  << std::setprecision(4) << std::setw(10) << a.fraction() << std::setw(13) << a.fractionOfOursKnown()
-			  << std::setw(8) << a.ours_known << std::setw(10) << a.occupied_only_ours << std::setw(8)
-			  << std::setprecision(3) << a.occupiedFound() << std::setw(10) << std::setprecision(4) << msPerRing
+			  << std::setprecision(4) << std::setw(10) << a.agreement() << std::setw(13) << a.agreementOfOursKnown()
+			  << std::setw(8) << a.ours_known << std::setw(10) << a.false_occupied << std::setw(8)
+			  << std::setprecision(3) << a.wallsFound() << std::setw(10) << std::setprecision(4) << msPerRing
 			  << "\n";
 }
 
@@ -128,14 +128,14 @@ void printMapRows(const std::string& sample, const std::vector<TRunResult>& runs
 {
 	for (const auto& r : runs)
 	{
-		const auto a = benchdata::compareWithMrptGrid(r.pipeline->grid(), truthGrid);
+		const auto a = benchdata::scoreMap(r.pipeline->grid(), truthGrid);
 		printRow(sample, r.name, a, stageMean(r.pipeline->timer(), "sonar_update"));
 		if (&r == &runs[0])
 			totals.laserAgreed += a.agreed, totals.laserCompared += a.compared, totals.laserKnown += a.ours_known;
 		if (&r == &runs[1])
 			totals.fusedAgreed += a.agreed, totals.fusedCompared += a.compared, totals.fusedKnown += a.ours_known;
 	}
-	printRow(sample, "sonar only (fast, w=1)", benchdata::compareWithMrptGrid(*runs[1].pipeline->sonarOnlyMap(), truthGrid),
+	printRow(sample, "sonar only (fast, w=1)", benchdata::scoreMap(*runs[1].pipeline->sonarOnlyMap(), truthGrid),
 			 0.0);
 }
 

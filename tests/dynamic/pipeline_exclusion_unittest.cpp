@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 #include <hslam/common/options_io.h>
 #include <hslam/common/config_overrides.h>
-#include <hslam/benchdata/occupied_cells.h>
+#include <hslam/benchdata/map_scoring.h>
 #include <hslam/io/CRawlogReader.h>
 #include <hslam/maps/CLaserGridInserter.h>
 #include <hslam/slam/CMappingPipeline.h>

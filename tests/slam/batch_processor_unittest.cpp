@@ -4,7 +4,7 @@
 #include <hslam/common/options_io.h>
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/io/CRawlogReader.h>
-#include <hslam/benchdata/grid_comparison.h>
+#include <hslam/benchdata/map_scoring.h>
 #include <hslam/batch/CBatchProcessor.h>
 #include <hslam/testing/temp_dir.h>
 #include <hslam/testing/test_paths.h>

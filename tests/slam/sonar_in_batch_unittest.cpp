@@ -9,7 +9,7 @@
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/eval/point_landmark_score.h>
 #include <hslam/io/CRawlogReader.h>
-#include <hslam/benchdata/grid_comparison.h>
+#include <hslam/benchdata/map_scoring.h>
 #include <hslam/sim/scene.h>
 #include <hslam/batch/CBatchProcessor.h>
 #include <hslam/slam/CSonarMappingStage.h>

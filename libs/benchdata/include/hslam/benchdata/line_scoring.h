@@ -15,8 +15,8 @@
  * order). */
 #pragma once
 
-#include <hslam/features/line_segment.h>
 #include <hslam/benchdata/synthetic_scan.h>
+#include <hslam/features/line_segment.h>
 
 #include <vector>
 
