@@ -16,6 +16,7 @@
  * legs_false_per_scan= (learned, late), ghost_cells_reduction= (learned)
  * and the other levels' and timing keys. */
 #include "bench_common.h"
+#include "bench_report.h"
 
 #include <hslam/dynamic/CDynamicObjectFilter.h>
 #include <hslam/dynamic/dynamic_profiles.h>
@@ -244,10 +245,11 @@ void printLevels(const std::string& method, const TMethodResult& r)
 {
 	const std::pair<const char*, const TLevel*> rows[] = {
 		{"detected", &r.detected}, {"dynamic (causal)", &r.dynamic}, {"dynamic (late)", &r.late}};
+	// The summary's header is printed by the caller (runLegsSuite).
+	const CReportTable table(std::cout, {{"", 2, true}, {"method", 26, true}, {"output", 18, true}, {"recall", 8},
+										 {"false legs per scan", 20}});
 	for (const auto& [name, level] : rows)
-		std::cout << "  " << std::left << std::setw(26) << method << std::setw(18) << name << std::right
-				  << std::setprecision(3) << std::setw(8) << level->recall() << std::setw(20) << level->falsePerScan()
-				  << "\n";
+		table.printRow({"", method, name, fixed(level->recall(), 3), fixed(level->falsePerScan(), 3)});
 }
 
 TTrailResult printTrail(const std::string& title, const dynamic::CDynamicObjectFilter::TOptions& options,
@@ -290,25 +292,22 @@ void printLegsKeys(const TMethodResult& rules, const TMethodResult& learned, con
 	// known at the scan) and the rules for comparison.
 	const double filter_s = learned.filter_s + trail.filter_s;
 	const size_t filterScans = learned.filter_scans + trail.scans;
-	std::cout << std::setprecision(4) << "\nlegs_negative_scans=" << learned.detected.negative_scans
-			  << "\nlegs_annotated=" << learned.detected.annotated
-			  << "\nlegs_rules_detected_recall=" << rules.detected.recall()
-			  << "\nlegs_rules_detected_false_per_scan=" << rules.detected.falsePerScan()
-			  << "\nlegs_rules_dynamic_recall=" << rules.dynamic.recall()
-			  << "\nlegs_rules_dynamic_false_per_scan=" << rules.dynamic.falsePerScan()
-			  << "\nlegs_detected_recall=" << learned.detected.recall()
-			  << "\nlegs_detected_false_per_scan=" << learned.detected.falsePerScan()
-			  << "\nlegs_causal_recall=" << learned.dynamic.recall()
-			  << "\nlegs_causal_false_per_scan=" << learned.dynamic.falsePerScan()
-			  << "\nghost_cells_rules_without=" << rulesTrail.trail_without
-			  << "\nghost_cells_rules_with=" << rulesTrail.trail_with << "\nghost_cells_without=" << trail.trail_without
-			  << "\nghost_cells_with=" << trail.trail_with
-			  << "\nfilter_us_per_scan=" << 1e6 * filter_s / std::max<size_t>(1, filterScans)
-			  << "\nfilter_rules_us_per_scan_labelled=" << 1e6 * rules.filter_s / std::max<size_t>(1, rules.filter_scans)
-			  << "\nfilter_learned_us_per_scan_labelled=" << 1e6 * learned.filter_s / std::max<size_t>(1, learned.filter_scans)
-			  << "\nfilter_learned_vs_rules_time_ratio=" << learned.filter_s / std::max(1e-12, rules.filter_s)
-			  << "\nlegs_recall=" << learned.late.recall() << "\nlegs_false_per_scan=" << learned.late.falsePerScan()
-			  << "\nghost_cells_reduction=" << reduction << "\n";
+	std::cout << "\n";
+	CKeyValueLines(std::cout, 4)("legs_negative_scans", learned.detected.negative_scans)(
+		"legs_annotated", learned.detected.annotated)("legs_rules_detected_recall", rules.detected.recall())(
+		"legs_rules_detected_false_per_scan", rules.detected.falsePerScan())(
+		"legs_rules_dynamic_recall", rules.dynamic.recall())(
+		"legs_rules_dynamic_false_per_scan", rules.dynamic.falsePerScan())(
+		"legs_detected_recall", learned.detected.recall())("legs_detected_false_per_scan", learned.detected.falsePerScan())(
+		"legs_causal_recall", learned.dynamic.recall())("legs_causal_false_per_scan", learned.dynamic.falsePerScan())(
+		"ghost_cells_rules_without", rulesTrail.trail_without)("ghost_cells_rules_with", rulesTrail.trail_with)(
+		"ghost_cells_without", trail.trail_without)("ghost_cells_with", trail.trail_with)(
+		"filter_us_per_scan", 1e6 * filter_s / std::max<size_t>(1, filterScans))(
+		"filter_rules_us_per_scan_labelled", 1e6 * rules.filter_s / std::max<size_t>(1, rules.filter_scans))(
+		"filter_learned_us_per_scan_labelled", 1e6 * learned.filter_s / std::max<size_t>(1, learned.filter_scans))(
+		"filter_learned_vs_rules_time_ratio", learned.filter_s / std::max(1e-12, rules.filter_s))(
+		"legs_recall", learned.late.recall())("legs_false_per_scan", learned.late.falsePerScan())(
+		"ghost_cells_reduction", reduction);
 }
 }  // namespace
 
