@@ -1,7 +1,7 @@
 #include "bench_common.h"
 
 #include <hslam/common/tum_trajectory.h>
-#include <hslam/maps/grid_comparison.h>
+#include <hslam/benchdata/reference_grid.h>
 #include <hslam/maps/grid_rendering.h>
 #include <hslam/slam/CMappingPipeline.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -102,7 +102,7 @@ mrpt::poses::CPose2D ourMapFrameInTruth(const std::string& sampleDir, const slam
 mrpt::maps::COccupancyGridMap2D truthMapOnOurCells(const std::string& sampleDir, const slam::CMappingPipeline& pipeline,
 												   const maps::TCellBounds& cells)
 {
-	return maps::resampleOntoOurCells(loadGridmap(sampleDir + "/gt_map.gridmap.gz"), pipeline.grid().geometry(), cells,
+	return benchdata::resampleOntoOurCells(loadGridmap(sampleDir + "/gt_map.gridmap.gz"), pipeline.grid().geometry(), cells,
 									  ourMapFrameInTruth(sampleDir, pipeline));
 }
 

@@ -22,6 +22,7 @@
  * whole-process CPU ms per scan of both, their ratio (issue target <= 1.5),
  * and ATE of both with a ground truth. */
 #include "bench_common.h"
+#include "bench_report.h"
 #include "child_process.h"
 
 #include <hslam/eval/evaluate_trajectory.h>
@@ -153,28 +154,34 @@ TGraphSizeRow measureGraphSize(int keyframes, const TLapRoute& route, const std:
 /** Rows of the default solver (sparse) and its peer (MRPT's), size by size. */
 void printGraphRows(const std::vector<TGraphSizeRow>& ours, const std::vector<TGraphSizeRow>& mrpt)
 {
-	std::cout << "\nPose-graph optimisation for one new closure (CPoseGraph::optimize), synthetic laps\n"
-			  << std::setw(10) << "keyframes" << std::setw(8) << "edges" << std::setw(12) << "sparse ms" << std::setw(6)
-			  << "iter" << std::setw(12) << "MRPT ms" << std::setw(6) << "iter" << std::setw(10) << "speedup"
-			  << std::setw(20) << "new 10 ATE before" << std::setw(13) << "after sparse" << std::setw(11) << "after MRPT"
-			  << std::setw(12) << "chi2 sparse" << std::setw(12) << "chi2 MRPT" << "\n";
+	std::cout << "\nPose-graph optimisation for one new closure (CPoseGraph::optimize), synthetic laps\n";
+	const CReportTable table(std::cout, {{"keyframes", 10},
+										 {"edges", 8},
+										 {"sparse ms", 12},
+										 {"iter", 6},
+										 {"MRPT ms", 12},
+										 {"iter", 6},
+										 {"speedup", 10},
+										 {"new 10 ATE before", 20},
+										 {"after sparse", 13},
+										 {"after MRPT", 11},
+										 {"chi2 sparse", 12},
+										 {"chi2 MRPT", 12}});
+	table.printHeader();
 	for (size_t k = 0; k < ours.size() && k < mrpt.size(); ++k)
 	{
-		const auto &r = ours[k], &m = mrpt[k];
-		std::cout << std::setw(10) << r.keyframes << std::setw(8) << r.edges << std::fixed << std::setprecision(1)
-				  << std::setw(12) << r.per_closure.time_ms << std::setw(6) << r.per_closure.iterations << std::setw(12)
-				  << m.per_closure.time_ms << std::setw(6) << m.per_closure.iterations << std::setw(10)
-				  << m.per_closure.time_ms / r.per_closure.time_ms << std::setprecision(3) << std::setw(20)
-				  << r.ate_new_before_m << std::setw(13) << r.ate_new_after_m << std::setw(11) << m.ate_new_after_m
-				  << std::setprecision(1) << std::setw(12) << r.per_closure.final_chi2 << std::setw(12)
-				  << m.per_closure.final_chi2 << "\n";
+		const auto &r = ours[k].per_closure, &m = mrpt[k].per_closure;
+		table.printRow({std::to_string(ours[k].keyframes), std::to_string(ours[k].edges), fixed(r.time_ms, 1),
+						std::to_string(r.iterations), fixed(m.time_ms, 1), std::to_string(m.iterations),
+						fixed(m.time_ms / r.time_ms, 1), fixed(ours[k].ate_new_before_m, 3),
+						fixed(ours[k].ate_new_after_m, 3), fixed(mrpt[k].ate_new_after_m, 3), fixed(r.final_chi2, 1),
+						fixed(m.final_chi2, 1)});
 	}
-	std::cout << std::defaultfloat << std::setprecision(6);
+	CKeyValueLines keys(std::cout);
 	for (size_t k = 0; k < ours.size() && k < mrpt.size(); ++k)
-		std::cout << "graph_optimize_ms_at_" << ours[k].nominal << "=" << ours[k].per_closure.time_ms << "\n"
-				  << "graph_optimize_mrpt_ms_at_" << ours[k].nominal << "=" << mrpt[k].per_closure.time_ms << "\n";
-	if (!ours.empty() && ours.back().nominal >= 10000)
-		std::cout << "graph_optimize_ms_at_10k=" << ours.back().per_closure.time_ms << "\n";
+		keys("graph_optimize_ms_at_" + std::to_string(ours[k].nominal), ours[k].per_closure.time_ms)(
+			"graph_optimize_mrpt_ms_at_" + std::to_string(ours[k].nominal), mrpt[k].per_closure.time_ms);
+	if (!ours.empty() && ours.back().nominal >= 10000) keys("graph_optimize_ms_at_10k", ours.back().per_closure.time_ms);
 }
 
 /** One rawlog through hslam-process with the back-end off and on. */
@@ -245,26 +252,32 @@ std::string metresOrDash(const std::optional<double>& v)
 void printBackendRows(const std::vector<TBackendRow>& rows)
 {
 	if (rows.empty()) return;
-	std::cout << "\nThe back-end in hslam-process: whole-process CPU ms per scan, loop closure off / on\n"
-			  << std::left << std::setw(24) << "rawlog" << std::right << std::setw(7) << "scans" << std::setw(10) << "off ms"
-			  << std::setw(10) << "on ms" << std::setw(8) << "ratio" << std::setw(11) << "ATE off" << std::setw(11)
-			  << "ATE on" << "\n";
+	std::cout << "\nThe back-end in hslam-process: whole-process CPU ms per scan, loop closure off / on\n";
+	const CReportTable table(std::cout, {{"rawlog", 24, true},
+										 {"scans", 7},
+										 {"off ms", 10},
+										 {"on ms", 10},
+										 {"ratio", 8},
+										 {"ATE off", 11},
+										 {"ATE on", 11},
+										 {"", 0, true}});
+	table.printHeader();
 	double extra = 0, off = 0, scans = 0;
 	for (const auto& r : rows)
 	{
 		const double n = static_cast<double>(r.scans), offMs = 1000 * r.cpu_off_s / n, onMs = 1000 * r.cpu_on_s / n;
-		std::cout << std::left << std::setw(24) << r.name.substr(0, 23) << std::right << std::setw(7) << r.scans
-				  << std::fixed << std::setprecision(2) << std::setw(10) << offMs << std::setw(10) << onMs
-				  << std::setw(8) << onMs / offMs << std::setw(11) << metresOrDash(r.ate_off_m) << std::setw(11)
-				  << metresOrDash(r.ate_on_m) << "   " << r.closures << "\n"
-				  << std::defaultfloat << std::setprecision(6);
+		table.printRow({r.name.substr(0, 23), std::to_string(r.scans), fixed(offMs, 2), fixed(onMs, 2),
+						fixed(onMs / offMs, 2), metresOrDash(r.ate_off_m), metresOrDash(r.ate_on_m),
+						"   " + r.closures});
 		extra += 1000 * (r.cpu_on_s - r.cpu_off_s), off += 1000 * r.cpu_off_s, scans += n;
 	}
+	CKeyValueLines keys(std::cout);
 	for (const auto& r : rows)
-		std::cout << "graph_" << r.name << "_cost_ratio=" << r.cpu_on_s / r.cpu_off_s << "\n"
-				  << (r.ate_on_m ? "graph_" + r.name + "_ate_on_m=" + std::to_string(*r.ate_on_m) + "\n" : "");
-	std::cout << "loop_closure_ms_per_scan=" << extra / scans << "\nloop_closure_cost_ratio=" << (off + extra) / off
-			  << "\n";
+	{
+		keys("graph_" + r.name + "_cost_ratio", r.cpu_on_s / r.cpu_off_s);
+		if (r.ate_on_m) keys("graph_" + r.name + "_ate_on_m", std::to_string(*r.ate_on_m));
+	}
+	keys("loop_closure_ms_per_scan", extra / scans)("loop_closure_cost_ratio", (off + extra) / off);
 }
 }  // namespace
 

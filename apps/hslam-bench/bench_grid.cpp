@@ -7,7 +7,7 @@
 #include "bench_report.h"
 
 #include <hslam/maps/CLaserGridInserter.h>
-#include <hslam/maps/grid_comparison.h>
+#include <hslam/benchdata/map_scoring.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/poses/CPose3D.h>
 
@@ -38,7 +38,7 @@ TRow measure(const std::string& rawlog, int repetitions)
 	insertOurs(ours, scans);
 	auto mrptGrid = makeMrptGrid(ours);
 	insertMrpt(mrptGrid, scans);
-	row.agreement = maps::compareWithMrptGrid(ours, mrptGrid).fraction();
+	row.agreement = benchdata::scoreMap(ours, mrptGrid).agreement();
 	row.ours_bytes = ours.memoryBytes();
 	row.mrpt_bytes = mrptGridBytes(mrptGrid);
 

@@ -19,7 +19,7 @@
 #include <hslam/common/options_io.h>
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/io/CRawlogReader.h>
-#include <hslam/maps/grid_comparison.h>
+#include <hslam/benchdata/map_scoring.h>
 #include <hslam/maps/grid_rendering.h>
 
 #include <cmath>
@@ -87,10 +87,10 @@ CReportTable rangeTable()
 									{"walls", 8}});
 }
 
-void printRow(const CReportTable& table, const std::string& input, double range_m, const maps::TCellAgreement& a)
+void printRow(const CReportTable& table, const std::string& input, double range_m, const benchdata::TMapScore& a)
 {
-	table.printRow({input, fixed(range_m, 0), fixed(a.fraction(), 4), fixed(a.fractionOfOursKnown(), 4),
-					std::to_string(a.agreed), std::to_string(a.ours_known - a.agreed), fixed(a.occupiedFound(), 3)});
+	table.printRow({input, fixed(range_m, 0), fixed(a.agreement(), 4), fixed(a.agreementOfOursKnown(), 4),
+					std::to_string(a.agreed), std::to_string(a.ours_known - a.agreed), fixed(a.wallsFound(), 3)});
 }
 }  // namespace
 
@@ -108,7 +108,7 @@ int runGridRangeSuite(const std::string& samplesDir, const std::vector<std::stri
 			const std::string dir = samplesDir + "/" + sample;
 			const TRangeRun run = runAtRange(dir + "/sim.rawlog", r);
 			const auto cells = run.pipeline->grid().observedBounds();
-			printRow(table, sample, r, maps::compareWithMrptGrid(run.pipeline->grid(), truthMapOnOurCells(dir, *run.pipeline, cells)));
+			printRow(table, sample, r, benchdata::scoreMap(run.pipeline->grid(), truthMapOnOurCells(dir, *run.pipeline, cells)));
 		}
 	for (size_t i = 0; i < rawlogs.size(); ++i)
 		for (const double r : kRanges_m)
@@ -119,7 +119,7 @@ int runGridRangeSuite(const std::string& samplesDir, const std::vector<std::stri
 			cells.include(reference.observedBounds());
 			const std::string name = rawlogs[i].substr(rawlogs[i].find_last_of('/') + 1);
 			printRow(table, name.substr(0, 13), r,
-					 maps::compareWithMrptGrid(run.pipeline->grid(), maps::toMrptGrid(reference, cells)));
+					 benchdata::scoreMap(run.pipeline->grid(), maps::toMrptGrid(reference, cells)));
 		}
 	return 0;
 }

@@ -16,13 +16,14 @@
  * legs_false_per_scan= (learned, late), ghost_cells_reduction= (learned)
  * and the other levels' and timing keys. */
 #include "bench_common.h"
+#include "bench_report.h"
 
 #include <hslam/dynamic/CDynamicObjectFilter.h>
 #include <hslam/dynamic/dynamic_profiles.h>
-#include <hslam/dynamic/leg_dataset.h>
-#include <hslam/dynamic/leg_scoring.h>
-#include <hslam/dynamic/leg_training.h>
-#include <hslam/dynamic/occupied_cells.h>
+#include <hslam/benchdata/leg_dataset.h>
+#include <hslam/benchdata/leg_scoring.h>
+#include <hslam/benchdata/leg_training.h>
+#include <hslam/benchdata/map_scoring.h>
 #include <hslam/io/rawlog_scans.h>
 #include <hslam/maps/CLaserGridInserter.h>
 #include <hslam/maps/grid_rendering.h>
@@ -46,8 +47,8 @@ namespace
 using mrpt::obs::CObservation2DRangeScan;
 namespace fs = std::filesystem;
 
-using dynamic::TLegsPerScan;
-using TScored = dynamic::TLegScore;
+using benchdata::TLegsPerScan;
+using TScored = benchdata::TLegScore;
 
 using TClassifierPtr = std::shared_ptr<const dynamic::CLegClassifier>;
 
@@ -133,11 +134,13 @@ TTrailResult trailOnStaticLog(const dynamic::CDynamicObjectFilter::TOptions& opt
 	r.person_tracks = static_cast<size_t>(stage.filter()->personTracker().createdTracks());
 	const auto background = medianScan(scans);
 	for (int k = 0; k < 20; ++k) inserter.insert(reference, origin, background);
-	r.static_cells = dynamic::occupiedCells(reference).size();
-	r.occupied_without = dynamic::occupiedCells(without).size();
-	r.occupied_with = dynamic::occupiedCells(with).size();
-	r.trail_without = dynamic::cellsNotIn(without, reference, 1).size();
-	r.trail_with = dynamic::cellsNotIn(with, reference, 1).size();
+	r.static_cells = benchdata::occupiedCells(reference).size();
+	r.occupied_without = benchdata::occupiedCells(without).size();
+	r.occupied_with = benchdata::occupiedCells(with).size();
+	// Trail = false occupied cells against the static structure (map_scoring.h).
+	const auto staticStructure = benchdata::cellClassesOf(reference);
+	r.trail_without = benchdata::falseOccupiedCells(benchdata::cellClassesOf(without), staticStructure, without.observedBounds()).size();
+	r.trail_with = benchdata::falseOccupiedCells(benchdata::cellClassesOf(with), staticStructure, with.observedBounds()).size();
 
 	saveExclusionComparison(without, with, 3, pngPath);
 	return r;
@@ -185,7 +188,7 @@ void addNegative(TLevel& level, const TLegsPerScan& reported)
  * classifier to use (null: the rules); negative parts use the ICP poses of
  * `negativePoses` (by part index), positive parts a static scanner. */
 TMethodResult evaluateMethod(const std::string& title, const dynamic::CDynamicObjectFilter::TOptions& options,
-							 const std::vector<dynamic::TLegDataPart>& parts,
+							 const std::vector<benchdata::TLegDataPart>& parts,
 							 const std::function<TClassifierPtr(size_t)>& classifierOf,
 							 const std::map<size_t, std::vector<mrpt::poses::CPose2D>>& negativePoses)
 {
@@ -199,16 +202,16 @@ TMethodResult evaluateMethod(const std::string& title, const dynamic::CDynamicOb
 		const auto& part = parts[i];
 		const auto classifier = classifierOf(i);
 		const auto poses = part.has_people ? std::vector<mrpt::poses::CPose2D>(part.scans.size()) : negativePoses.at(i);
-		const auto levels = dynamic::runLegFilter(options, classifier, part.scans, poses);
+		const auto levels = benchdata::runLegFilter(options, classifier, part.scans, poses);
 		const auto &all = levels.detected, &dyn = levels.dynamic, &late = levels.late;
 		r.filter_s += levels.seconds;
 		r.filter_scans += part.scans.size();
 		std::cout << "  " << std::left << std::setw(24) << part.name << std::right << std::setw(6) << part.scans.size();
 		if (part.has_people)
 		{
-			const auto det = dynamic::scoreAgainstAnnotations(all, part.annotations, kMatchRadius_m, options.detector.max_range_m);
-			const auto dy = dynamic::scoreAgainstAnnotations(dyn, part.annotations, kMatchRadius_m, options.detector.max_range_m);
-			const auto lt = dynamic::scoreAgainstAnnotations(late, part.annotations, kMatchRadius_m, options.detector.max_range_m);
+			const auto det = benchdata::scoreAgainstAnnotations(all, part.annotations, kMatchRadius_m, options.detector.max_range_m);
+			const auto dy = benchdata::scoreAgainstAnnotations(dyn, part.annotations, kMatchRadius_m, options.detector.max_range_m);
+			const auto lt = benchdata::scoreAgainstAnnotations(late, part.annotations, kMatchRadius_m, options.detector.max_range_m);
 			addPositive(r.detected, det);
 			addPositive(r.dynamic, dy);
 			addPositive(r.late, lt);
@@ -242,10 +245,11 @@ void printLevels(const std::string& method, const TMethodResult& r)
 {
 	const std::pair<const char*, const TLevel*> rows[] = {
 		{"detected", &r.detected}, {"dynamic (causal)", &r.dynamic}, {"dynamic (late)", &r.late}};
+	// The summary's header is printed by the caller (runLegsSuite).
+	const CReportTable table(std::cout, {{"", 2, true}, {"method", 26, true}, {"output", 18, true}, {"recall", 8},
+										 {"false legs per scan", 20}});
 	for (const auto& [name, level] : rows)
-		std::cout << "  " << std::left << std::setw(26) << method << std::setw(18) << name << std::right
-				  << std::setprecision(3) << std::setw(8) << level->recall() << std::setw(20) << level->falsePerScan()
-				  << "\n";
+		table.printRow({"", method, name, fixed(level->recall(), 3), fixed(level->falsePerScan(), 3)});
 }
 
 TTrailResult printTrail(const std::string& title, const dynamic::CDynamicObjectFilter::TOptions& options,
@@ -260,7 +264,7 @@ TTrailResult printTrail(const std::string& title, const dynamic::CDynamicObjectF
 	return trail;
 }
 /** Robot poses of the parts without people (no odometry, no tf): ICP per sensor. */
-std::map<size_t, std::vector<mrpt::poses::CPose2D>> negativePartPoses(const std::vector<dynamic::TLegDataPart>& parts)
+std::map<size_t, std::vector<mrpt::poses::CPose2D>> negativePartPoses(const std::vector<benchdata::TLegDataPart>& parts)
 {
 	std::map<size_t, std::vector<mrpt::poses::CPose2D>> negativePoses;
 	std::cout << "\nRobot motion of the parts without people (no odometry, no tf): ICP per sensor\n";
@@ -288,25 +292,22 @@ void printLegsKeys(const TMethodResult& rules, const TMethodResult& learned, con
 	// known at the scan) and the rules for comparison.
 	const double filter_s = learned.filter_s + trail.filter_s;
 	const size_t filterScans = learned.filter_scans + trail.scans;
-	std::cout << std::setprecision(4) << "\nlegs_negative_scans=" << learned.detected.negative_scans
-			  << "\nlegs_annotated=" << learned.detected.annotated
-			  << "\nlegs_rules_detected_recall=" << rules.detected.recall()
-			  << "\nlegs_rules_detected_false_per_scan=" << rules.detected.falsePerScan()
-			  << "\nlegs_rules_dynamic_recall=" << rules.dynamic.recall()
-			  << "\nlegs_rules_dynamic_false_per_scan=" << rules.dynamic.falsePerScan()
-			  << "\nlegs_detected_recall=" << learned.detected.recall()
-			  << "\nlegs_detected_false_per_scan=" << learned.detected.falsePerScan()
-			  << "\nlegs_causal_recall=" << learned.dynamic.recall()
-			  << "\nlegs_causal_false_per_scan=" << learned.dynamic.falsePerScan()
-			  << "\nghost_cells_rules_without=" << rulesTrail.trail_without
-			  << "\nghost_cells_rules_with=" << rulesTrail.trail_with << "\nghost_cells_without=" << trail.trail_without
-			  << "\nghost_cells_with=" << trail.trail_with
-			  << "\nfilter_us_per_scan=" << 1e6 * filter_s / std::max<size_t>(1, filterScans)
-			  << "\nfilter_rules_us_per_scan_labelled=" << 1e6 * rules.filter_s / std::max<size_t>(1, rules.filter_scans)
-			  << "\nfilter_learned_us_per_scan_labelled=" << 1e6 * learned.filter_s / std::max<size_t>(1, learned.filter_scans)
-			  << "\nfilter_learned_vs_rules_time_ratio=" << learned.filter_s / std::max(1e-12, rules.filter_s)
-			  << "\nlegs_recall=" << learned.late.recall() << "\nlegs_false_per_scan=" << learned.late.falsePerScan()
-			  << "\nghost_cells_reduction=" << reduction << "\n";
+	std::cout << "\n";
+	CKeyValueLines(std::cout, 4)("legs_negative_scans", learned.detected.negative_scans)(
+		"legs_annotated", learned.detected.annotated)("legs_rules_detected_recall", rules.detected.recall())(
+		"legs_rules_detected_false_per_scan", rules.detected.falsePerScan())(
+		"legs_rules_dynamic_recall", rules.dynamic.recall())(
+		"legs_rules_dynamic_false_per_scan", rules.dynamic.falsePerScan())(
+		"legs_detected_recall", learned.detected.recall())("legs_detected_false_per_scan", learned.detected.falsePerScan())(
+		"legs_causal_recall", learned.dynamic.recall())("legs_causal_false_per_scan", learned.dynamic.falsePerScan())(
+		"ghost_cells_rules_without", rulesTrail.trail_without)("ghost_cells_rules_with", rulesTrail.trail_with)(
+		"ghost_cells_without", trail.trail_without)("ghost_cells_with", trail.trail_with)(
+		"filter_us_per_scan", 1e6 * filter_s / std::max<size_t>(1, filterScans))(
+		"filter_rules_us_per_scan_labelled", 1e6 * rules.filter_s / std::max<size_t>(1, rules.filter_scans))(
+		"filter_learned_us_per_scan_labelled", 1e6 * learned.filter_s / std::max<size_t>(1, learned.filter_scans))(
+		"filter_learned_vs_rules_time_ratio", learned.filter_s / std::max(1e-12, rules.filter_s))(
+		"legs_recall", learned.late.recall())("legs_false_per_scan", learned.late.falsePerScan())(
+		"ghost_cells_reduction", reduction);
 }
 }  // namespace
 
@@ -320,7 +321,7 @@ int runLegsSuite(const std::string& dataDir, const std::string& outDir, const st
 			  << " (rules), " << learnedIni << " (learned classifier)\n";
 	if (!configFile.empty()) std::cout << "then the [dynamic_objects] keys of " << configFile << "\n";
 
-	const auto parts = dynamic::loadLegDataset(dataDir);
+	const auto parts = benchdata::loadLegDataset(dataDir);
 	const auto negativePoses = negativePartPoses(parts);
 
 	// 1. The rule set (thesis 4.7.1 with the Hokuyo profile).
@@ -330,7 +331,7 @@ int runLegsSuite(const std::string& dataDir, const std::string& outDir, const st
 	// 2. The learned classifier, cross-validated: each part is scored with a
 	// forest that never saw it nor its fold (legs_cross_validation.h).
 	const auto trainOptions = dynamic::loadLegTrainOptions(configFile);
-	const auto folds = dynamic::trainFoldClassifiers(parts, learnedOptions.detector, trainOptions);
+	const auto folds = benchdata::trainFoldClassifiers(parts, learnedOptions.detector, trainOptions);
 	const auto learned = evaluateMethod(
 		"Learned classifier, " + std::to_string(folds.models.size()) + "-fold cross-validated (" + folds.description + ")",
 		learnedOptions, parts, [&](size_t i) { return folds.models[static_cast<size_t>(folds.fold_of_part[i])]; },
@@ -344,7 +345,7 @@ int runLegsSuite(const std::string& dataDir, const std::string& outDir, const st
 	// 3. Static scanner, people walking: trail of occupied cells. The learned
 	// filter uses a forest trained on every labelled part (the demo has none).
 	fs::create_directories(outDir);
-	const auto fullModel = dynamic::trainOnAll(parts, learnedOptions.detector, trainOptions);
+	const auto fullModel = benchdata::trainOnAll(parts, learnedOptions.detector, trainOptions);
 	std::cout << "\ndemo_stationary_simple_environment (static scanner, people walking)\n"
 			  << "  method                    static  occupied w/o / with  trail w/o / with  persons  masked/scan\n";
 	const std::string demo = dataDir + "/demo_stationary_simple_environment.rawlog";

@@ -16,12 +16,13 @@
  * numbers measure the filter, not odometry drift. */
 #include "bench_common.h"
 #include "bench_csv.h"
+#include "bench_report.h"
 
 #include <hslam/common/options_io.h>
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/dynamic/CDynamicObjectFilter.h>
 #include <hslam/dynamic/dynamic_profiles.h>
-#include <hslam/dynamic/occupied_cells.h>
+#include <hslam/benchdata/map_scoring.h>
 #include <hslam/io/CGzLineReader.h>
 #include <hslam/io/rawlog_scans.h>
 #include <hslam/maps/CLaserGridInserter.h>
@@ -33,7 +34,6 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <iomanip>
 #include <iostream>
 #include <map>
 #include <set>
@@ -163,18 +163,16 @@ class CIdentityScore
 	std::map<int, double> m_lastMatch_s;  //!< true person -> time of that match
 };
 
-/** Occupied cells only people ever hit (not within one cell of a static hit). */
+/** Occupied cells only people ever hit: the false occupied cells (map_scoring.h)
+ * against the cells static-structure beams hit, that a person beam hit. */
 size_t peopleOnlyOccupiedCells(const maps::CTiledOccupancyGrid& g, const THitCells& cells)
 {
+	const benchdata::TCellClassOf staticHits = [&cells](const maps::TGlobalCell& c) {
+		return cells.statics.count({c.gx, c.gy}) ? benchdata::ECellClass::occupied : benchdata::ECellClass::unknown;
+	};
 	size_t n = 0;
-	for (const auto& c : dynamic::occupiedCells(g))
-	{
-		if (!cells.person.count({c.gx, c.gy})) continue;
-		bool nearStatic = false;
-		for (int dy = -1; dy <= 1; ++dy)
-			for (int dx = -1; dx <= 1; ++dx) nearStatic |= cells.statics.count({c.gx + dx, c.gy + dy}) > 0;
-		n += !nearStatic;
-	}
+	for (const auto& c : benchdata::falseOccupiedCells(benchdata::cellClassesOf(g), staticHits, g.observedBounds()))
+		n += cells.person.count({c.gx, c.gy});
 	return n;
 }
 
@@ -232,17 +230,25 @@ TSimResult runAllSamples(const std::vector<fs::path>& samples, const dynamic::CD
 						 const std::string& label, const std::string& pngDir)
 {
 	TSimResult total;
-	std::cout << "Simulated samples (ground-truth poses; options: " << label << ")\n"
-			  << "  sample     scans people  beam precision  recall  coverage  id switches  people cells without/with\n";
+	std::cout << "Simulated samples (ground-truth poses; options: " << label << ")\n";
+	const CReportTable table(std::cout, {{"", 2, true},
+										 {"sample", 10, true},
+										 {"scans", 6},
+										 {"people", 7},
+										 {"beam precision", 16},
+										 {"recall", 8},
+										 {"coverage", 10},
+										 {"id switches", 13},
+										 {"  people cells without/with", 0}});
+	table.printHeader();
 	for (const auto& dir : samples)
 	{
 		const std::string name = dir.filename().string();
 		const auto r = runSample(dir, options, pngDir.empty() ? "" : pngDir + "/legs_sim_" + name + "_maps.png");
-		std::cout << "  " << std::left << std::setw(10) << name << std::right << std::setw(6) << r.scans
-				  << std::setw(7) << r.people << std::fixed << std::setprecision(3) << std::setw(16)
-				  << ratio(r.tp, r.tp + r.fp) << std::setw(8) << ratio(r.tp, r.tp + r.fn) << std::setw(10)
-				  << ratio(r.covered_frames, r.person_frames) << std::setw(13) << r.id_switches << std::setw(16)
-				  << r.people_cells_without << " / " << r.people_cells_with << "\n";
+		table.printRow({"", name, std::to_string(r.scans), std::to_string(r.people), fixed(ratio(r.tp, r.tp + r.fp), 3),
+						fixed(ratio(r.tp, r.tp + r.fn), 3), fixed(ratio(r.covered_frames, r.person_frames), 3),
+						std::to_string(r.id_switches),
+						padLeft(std::to_string(r.people_cells_without), 16) + " / " + std::to_string(r.people_cells_with)});
 		total.scans += r.scans;
 		total.tp += r.tp, total.fp += r.fp, total.fn += r.fn;
 		total.people += r.people, total.person_frames += r.person_frames, total.covered_frames += r.covered_frames;
@@ -257,6 +263,20 @@ TSimResult runAllSamples(const std::vector<fs::path>& samples, const dynamic::CD
 double reduction(const TSimResult& r)
 {
 	return r.people_cells_without ? 1.0 - ratio(r.people_cells_with, r.people_cells_without) : 0.0;
+}
+
+void printLegsSimKeys(const TSimResult& th, const TSimResult& total)
+{
+	CKeyValueLines(std::cout, 4)("sim_thesis_beam_precision", ratio(th.tp, th.tp + th.fp))(
+		"sim_thesis_beam_recall", ratio(th.tp, th.tp + th.fn))("sim_thesis_people_cells_reduction", reduction(th))(
+		"sim_scans", total.scans)("sim_beam_precision", ratio(total.tp, total.tp + total.fp))(
+		"sim_beam_recall", ratio(total.tp, total.tp + total.fn))(
+		"sim_person_coverage", ratio(total.covered_frames, total.person_frames))(
+		"sim_id_switches_per_person", ratio(total.id_switches, total.people))(
+		"sim_id_switches_within_memory_per_person", ratio(total.id_switches_short, total.people))(
+		"sim_people_cells_without", total.people_cells_without)("sim_people_cells_with", total.people_cells_with)(
+		"sim_people_cells_reduction", reduction(total))(
+		"sim_filter_us_per_scan", 1e6 * total.filter_s / std::max<size_t>(1, total.scans));
 }
 }  // namespace
 
@@ -277,21 +297,10 @@ int runLegsSimSuite(const std::string& dataDir, const std::string& outDir, const
 	fs::create_directories(outDir);
 
 	const auto th = runAllSamples(samples, thesis, "thesis rule set, " + thesisIni, "");
-	std::cout << "  people cells reduction: " << std::setprecision(3) << reduction(th) << "\n\n";
+	std::cout << "  people cells reduction: " << fixed(reduction(th), 3) << "\n\n";
 	const auto total = runAllSamples(samples, options, configFile.empty() ? "defaults" : configFile, outDir);
-	std::cout << "  maps side by side: " << outDir << "/legs_sim_<sample>_maps.png\n\n"
-			  << std::setprecision(4) << "sim_thesis_beam_precision=" << ratio(th.tp, th.tp + th.fp)
-			  << "\nsim_thesis_beam_recall=" << ratio(th.tp, th.tp + th.fn)
-			  << "\nsim_thesis_people_cells_reduction=" << reduction(th) << "\nsim_scans=" << total.scans
-			  << "\nsim_beam_precision=" << ratio(total.tp, total.tp + total.fp)
-			  << "\nsim_beam_recall=" << ratio(total.tp, total.tp + total.fn)
-			  << "\nsim_person_coverage=" << ratio(total.covered_frames, total.person_frames)
-			  << "\nsim_id_switches_per_person=" << ratio(total.id_switches, total.people)
-			  << "\nsim_id_switches_within_memory_per_person=" << ratio(total.id_switches_short, total.people)
-			  << "\nsim_people_cells_without=" << total.people_cells_without
-			  << "\nsim_people_cells_with=" << total.people_cells_with
-			  << "\nsim_people_cells_reduction=" << reduction(total)
-			  << "\nsim_filter_us_per_scan=" << 1e6 * total.filter_s / std::max<size_t>(1, total.scans) << "\n";
+	std::cout << "  maps side by side: " << outDir << "/legs_sim_<sample>_maps.png\n\n";
+	printLegsSimKeys(th, total);
 	return 0;
 }
 

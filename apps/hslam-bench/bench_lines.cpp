@@ -21,8 +21,8 @@
 #include <hslam/common/options_io.h>
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/features/CLineExtractor.h>
-#include <hslam/features/line_scenes.h>
-#include <hslam/features/line_scoring.h>
+#include <hslam/benchdata/line_scenes.h>
+#include <hslam/benchdata/line_scoring.h>
 #include <hslam/io/carmen_import.h>
 #include <hslam/features/scan_points.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -49,11 +49,11 @@ constexpr double kSigma_m = 0.01, kNoisySigma_m = 0.03;
 struct TSyntheticRow
 {
 	std::string scene, method;
-	features::TLineScore total;  //!< summed over trials
+	benchdata::TLineScore total;  //!< summed over trials
 	double us_per_scan = 0;
 };
 
-void accumulate(features::TLineScore& total, const features::TLineScore& s)
+void accumulate(benchdata::TLineScore& total, const benchdata::TLineScore& s)
 {
 	total.truth += s.truth;
 	total.extracted += s.extracted;
@@ -90,20 +90,20 @@ std::vector<TSyntheticRow> runSynthetic(const std::vector<TNamedExtractor>& extr
 	std::vector<TSyntheticRow> rows;
 	std::mt19937 rng(42);
 	std::uniform_real_distribution<double> jitter(-1, 1);
-	for (const auto& scene : features::thesisTable3Scenes(kSigma_m, kNoisySigma_m))
+	for (const auto& scene : benchdata::thesisTable3Scenes(kSigma_m, kNoisySigma_m))
 	{
-		std::vector<features::TSyntheticScan> sims;
+		std::vector<benchdata::TSyntheticScan> sims;
 		for (int t = 0; t < kTrials; ++t)
 		{
 			const mrpt::poses::CPose2D pose(0.1 * jitter(rng), 0.1 * jitter(rng), 3.0 * M_PI / 180 * jitter(rng));
-			sims.push_back(features::simulateScan(scene.walls, pose, {}, static_cast<uint32_t>(1000 + t)));
+			sims.push_back(benchdata::simulateScan(scene.walls, pose, {}, static_cast<uint32_t>(1000 + t)));
 		}
 		for (const auto& [label, ex] : extractors)
 		{
 			TSyntheticRow row{scene.name, label, {}, 0};
 			mrpt::random::getRandomGenerator().randomize(1234);
 			for (const auto& sim : sims)
-				accumulate(row.total, features::scoreLines(features::visibleWalls(sim, 5, 0.2), ex->extract(sim.scan)));
+				accumulate(row.total, benchdata::scoreLines(benchdata::visibleWalls(sim, 5, 0.2), ex->extract(sim.scan)));
 			const double t_s = bestTimeOf(repetitions, [&] {
 				for (const auto& sim : sims) (void)ex->extract(sim.scan);  // virtual call: not elided
 			});
@@ -279,7 +279,7 @@ std::vector<std::string> defaultLogs()
 /** Per method: synthetic scores pooled over the scenes, and mean time per scan. */
 struct TSyntheticTotals
 {
-	std::map<std::string, features::TLineScore> pooled;
+	std::map<std::string, benchdata::TLineScore> pooled;
 	std::map<std::string, double> us_per_scan;
 };
 

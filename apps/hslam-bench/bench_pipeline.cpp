@@ -18,6 +18,7 @@
  * mapped to the scans' timestamps by reading the rawlog step by step with
  * the same MRPT call icp-slam uses. Runs and trajectories stay in --out. */
 #include "bench_common.h"
+#include "bench_report.h"
 #include "child_process.h"
 
 #include <hslam/common/tum_trajectory.h>
@@ -231,18 +232,23 @@ std::string fixedOrDash(const std::optional<double>& v, int digits)
 
 void printTable(const std::vector<TBenchRow>& rows)
 {
-	std::cout << "\nWhole-process CPU ms per scan (start-up excluded: minus a 1-scan run), ATE RMSE (m)\n"
-			  << std::left << std::setw(26) << "rawlog" << std::right << std::setw(7) << "scans" << std::setw(10)
-			  << "ours ms" << std::setw(10) << "icp ms" << std::setw(9) << "speedup" << std::setw(10) << "ATE odo"
-			  << std::setw(10) << "ATE ours" << std::setw(10) << "ATE icp" << "\n";
+	std::cout << "\nWhole-process CPU ms per scan (start-up excluded: minus a 1-scan run), ATE RMSE (m)\n";
+	const CReportTable table(std::cout, {{"rawlog", 26, true},
+										 {"scans", 7},
+										 {"ours ms", 10},
+										 {"icp ms", 10},
+										 {"speedup", 9},
+										 {"ATE odo", 10},
+										 {"ATE ours", 10},
+										 {"ATE icp", 10},
+										 {"", 0, true}});
+	table.printHeader();
 	for (const auto& r : rows)
 	{
 		const double ours = r.ours.msPerScan(r.log.scans), icp = r.icp.msPerScan(r.log.scans);
-		std::cout << std::left << std::setw(26) << r.log.name.substr(0, 25) << std::right << std::setw(7) << r.log.scans
-				  << std::setw(10) << fixedOrDash(ours, 3) << std::setw(10) << fixedOrDash(icp, 3) << std::setw(9)
-				  << fixedOrDash(icp / ours, 2) << std::setw(10) << fixedOrDash(r.ate_odometry_m, 3) << std::setw(10)
-				  << fixedOrDash(r.ate_ours_m, 3) << std::setw(10) << fixedOrDash(r.ate_icp_m, 3)
-				  << (r.icp_note.empty() ? "" : "  icp-slam: " + r.icp_note) << "\n";
+		table.printRow({r.log.name.substr(0, 25), std::to_string(r.log.scans), fixedOrDash(ours, 3), fixedOrDash(icp, 3),
+						fixedOrDash(icp / ours, 2), fixedOrDash(r.ate_odometry_m, 3), fixedOrDash(r.ate_ours_m, 3),
+						fixedOrDash(r.ate_icp_m, 3), r.icp_note.empty() ? "" : "  icp-slam: " + r.icp_note});
 	}
 }
 
@@ -250,21 +256,21 @@ void printKeyValues(const std::vector<TBenchRow>& rows)
 {
 	double oursMs = 0, icpMs = 0, intervals = 0;
 	std::cout << "\n";
+	CKeyValueLines keys(std::cout);
 	for (const auto& r : rows)
 	{
 		const double ours = r.ours.msPerScan(r.log.scans), icp = r.icp.msPerScan(r.log.scans);
 		const std::string k = "pipeline_" + r.log.name + "_";
-		std::cout << k << "pipeline_ms_per_scan=" << ours << "\n"
-				  << k << "icp_slam_ms_per_scan=" << icp << "\n"
-				  << k << "pipeline_speedup_vs_icp_slam=" << icp / ours << "\n";
-		if (r.ate_ours_m) std::cout << k << "pipeline_ate_m=" << *r.ate_ours_m << "\n";
-		if (r.ate_icp_m) std::cout << k << "icp_slam_ate_m=" << *r.ate_icp_m << "\n";
-		if (r.ate_odometry_m) std::cout << k << "odometry_ate_m=" << *r.ate_odometry_m << "\n";
+		keys(k + "pipeline_ms_per_scan", ours)(k + "icp_slam_ms_per_scan", icp)(k + "pipeline_speedup_vs_icp_slam",
+																			   icp / ours);
+		if (r.ate_ours_m) keys(k + "pipeline_ate_m", *r.ate_ours_m);
+		if (r.ate_icp_m) keys(k + "icp_slam_ate_m", *r.ate_icp_m);
+		if (r.ate_odometry_m) keys(k + "odometry_ate_m", *r.ate_odometry_m);
 		const double n = static_cast<double>(r.log.scans - 1);
 		oursMs += ours * n, icpMs += icp * n, intervals += n;
 	}
-	std::cout << "pipeline_ms_per_scan=" << oursMs / intervals << "\nicp_slam_ms_per_scan=" << icpMs / intervals
-			  << "\npipeline_speedup_vs_icp_slam=" << icpMs / oursMs << "\n";
+	keys("pipeline_ms_per_scan", oursMs / intervals)("icp_slam_ms_per_scan", icpMs / intervals)(
+		"pipeline_speedup_vs_icp_slam", icpMs / oursMs);
 }
 
 /** -r defaults: MRPT's sample rawlog and every rawlog_samples/<name>/sim.rawlog. */

@@ -29,4 +29,9 @@ std::string fixed(double value, int decimals)
 	return text.str();
 }
 
+std::string padLeft(const std::string& text, int width)
+{
+	return text.size() >= static_cast<size_t>(width) ? text : std::string(width - text.size(), ' ') + text;
+}
+
 }  // namespace hslam::bench

@@ -2,6 +2,7 @@
  * key=value lines for scripts. */
 #pragma once
 
+#include <iomanip>
 #include <ostream>
 #include <sstream>
 #include <string>
@@ -38,17 +39,21 @@ class CReportTable
 std::string fixed(double value, int decimals);
 
 /** key=value lines: floating-point values with 6 significant digits
- * (std::defaultfloat), integers and texts as they are. */
+ * (std::defaultfloat) or, with `fixedDecimals` >= 0, that many digits after
+ * the point (std::fixed); integers and texts as they are. */
 class CKeyValueLines
 {
    public:
-	explicit CKeyValueLines(std::ostream& out) : m_out(out) {}
+	explicit CKeyValueLines(std::ostream& out, int fixedDecimals = -1) : m_out(out), m_fixedDecimals(fixedDecimals) {}
 
 	template <class T>
 	CKeyValueLines& operator()(const std::string& key, const T& value)
 	{
 		std::ostringstream text;
-		text.precision(6);
+		if (m_fixedDecimals >= 0)
+			text << std::fixed << std::setprecision(m_fixedDecimals);
+		else
+			text.precision(6);
 		text << value;
 		m_out << key << "=" << text.str() << "\n";
 		return *this;
@@ -56,6 +61,10 @@ class CKeyValueLines
 
    private:
 	std::ostream& m_out;
+	int m_fixedDecimals;
 };
+
+/** `text` right-aligned in `width` characters (a cell built from two figures). */
+std::string padLeft(const std::string& text, int width);
 
 }  // namespace hslam::bench

@@ -12,15 +12,12 @@
  *      filters.
  * Maps are built with the TRUE poses (the models are measured, not the
  * localisation). Ground truth map: a cell is occupied if a wall or a circle
- * passes through it. Scores (same for every map):
- *   agreement      = correct known cells / known cells (scored: the free
- *                    space reachable from the start and the cells next to
- *                    obstacles; box interiors are not scored), where an occupied
- *                    cell is correct if a true obstacle is within one cell and a
- *                    free cell is correct if its own cell holds no obstacle;
- *   false occupied = occupied cells with no obstacle within one cell;
- *   walls found    = true obstacle cells within 3 m of the path that have an
- *                    occupied cell within one cell.
+ * passes through it, free if it is reachable from the start without crossing
+ * one, unknown otherwise (inside boxes, outside the building). Every map is
+ * scored over the scene's cells (its bounds + 1 m) with the figures of
+ * benchdata/map_scoring.h (agreement, agree(known), false occupied, walls
+ * found), the same definitions as the grid, grid-range, sonar-batch and legs
+ * suites.
  * The scene's convex corners and wall ends get 2 cm cylinders: real edges
  * diffract sound back from any direction (the point reflectors TBF relies
  * on), the simulator's planes are purely specular. Images go to outDir. */
@@ -28,7 +25,7 @@
 #include "bench_report.h"
 
 #include <hslam/maps/CSonarGridInserter.h>
-#include <hslam/maps/grid_comparison.h>
+#include <hslam/benchdata/map_scoring.h>
 #include <hslam/maps/grid_rendering.h>
 #include <hslam/sim/CSimulator.h>
 #include <hslam/sonar/CTbfCornerDetector.h>
@@ -102,25 +99,17 @@ TSimRun simulate(const std::string& name, const std::string& sceneText, const st
 }
 
 // ------------------------------------------------------------------ ground truth
-struct TCellHash
-{
-	size_t operator()(const maps::TGlobalCell& c) const
-	{
-		return std::hash<long long>()((static_cast<long long>(c.gx) << 32) ^ static_cast<unsigned>(c.gy));
-	}
-};
-using TCellSet = std::unordered_set<maps::TGlobalCell, TCellHash>;
+using TCellSet = std::unordered_set<maps::TGlobalCell, maps::TGlobalCellHash>;
 
 struct TTruth
 {
-	TCellSet occupied, dilated;  //!< obstacle cells; and every cell within one cell of one
+	TCellSet occupied;  //!< obstacle cells
 	TCellSet reachable;  //!< free cells connected to the start (not inside boxes or outside the building)
-	TCellSet nearPath;  //!< obstacle cells within 3 m of the path
+	maps::TCellBounds area;  //!< the scored cells: the scene's bounds + 1 m
 };
 
-TTruth groundTruth(const TSimRun& run, const maps::CTiledGridGeometry& geo)
+void addObstacleCells(const TSimRun& run, const maps::CTiledGridGeometry& geo, TCellSet& occupied)
 {
-	TTruth t;
 	const double step = 0.25 * geo.resolution_m();
 	for (const auto& s : run.scene.world.segments())
 	{
@@ -129,19 +118,23 @@ TTruth groundTruth(const TSimRun& run, const maps::CTiledGridGeometry& geo)
 		for (int i = 0; i <= n; ++i)
 		{
 			const double u = n ? static_cast<double>(i) / n : 0.0;
-			t.occupied.insert(geo.cellOf(s.a.x + u * (s.b.x - s.a.x), s.a.y + u * (s.b.y - s.a.y)));
+			occupied.insert(geo.cellOf(s.a.x + u * (s.b.x - s.a.x), s.a.y + u * (s.b.y - s.a.y)));
 		}
 	}
 	for (const auto& c : run.scene.world.circles())
 		for (int i = 0; i < 64; ++i)
-			t.occupied.insert(geo.cellOf(c.centre.x + c.radius_m * std::cos(i * M_PI / 32),
-										 c.centre.y + c.radius_m * std::sin(i * M_PI / 32)));
-	for (const auto& c : t.occupied)
-		for (int dy = -1; dy <= 1; ++dy)
-			for (int dx = -1; dx <= 1; ++dx) t.dilated.insert({c.gx + dx, c.gy + dy});
+			occupied.insert(geo.cellOf(c.centre.x + c.radius_m * std::cos(i * M_PI / 32),
+									   c.centre.y + c.radius_m * std::sin(i * M_PI / 32)));
+}
+
+TTruth groundTruth(const TSimRun& run, const maps::CTiledGridGeometry& geo)
+{
+	TTruth t;
+	addObstacleCells(run, geo, t.occupied);
 	// Flood fill of free space from the start (4-connected, inside the bounds + 1 m).
 	const auto b = run.scene.world.bounds();
 	const auto lo = geo.cellOf(b.min_x - 1, b.min_y - 1), hi = geo.cellOf(b.max_x + 1, b.max_y + 1);
+	t.area = {lo.gx, hi.gx, lo.gy, hi.gy};
 	std::vector<maps::TGlobalCell> stack{geo.cellOf(run.path.front().x, run.path.front().y)};
 	while (!stack.empty())
 	{
@@ -152,80 +145,26 @@ TTruth groundTruth(const TSimRun& run, const maps::CTiledGridGeometry& geo)
 		stack.push_back({c.gx + 1, c.gy}), stack.push_back({c.gx - 1, c.gy});
 		stack.push_back({c.gx, c.gy + 1}), stack.push_back({c.gx, c.gy - 1});
 	}
-	for (const auto& c : t.occupied)
-	{
-		const auto p = geo.cellCentre(c);
-		for (size_t i = 0; i < run.path.size(); i += 5)
-			if (std::hypot(p.x - run.path[i].x, p.y - run.path[i].y) <= 3.0)
-			{
-				t.nearPath.insert(c);
-				break;
-			}
-	}
 	return t;
 }
 
-struct TTruthScore
+benchdata::TCellClassOf truthClasses(const TTruth& truth)
 {
-	size_t known = 0, correct = 0, occupied = 0, false_occupied = 0, walls_near = 0, walls_found = 0;
-	double agreement() const { return known ? static_cast<double>(correct) / known : 0.0; }
-	double wallsFound() const { return walls_near ? static_cast<double>(walls_found) / walls_near : 0.0; }
-};
-
-/** classify(cell) -> ECellClass for any map. */
-template <class Classify>
-TTruthScore scoreAgainstTruth(const maps::TCellBounds& b, const TTruth& truth, Classify&& classify)
-{
-	TTruthScore s;
-	TCellSet occupiedCells;
-	for (int gy = b.gyMin; gy <= b.gyMax; ++gy)
-		for (int gx = b.gxMin; gx <= b.gxMax; ++gx)
-		{
-			const maps::TGlobalCell c{gx, gy};
-			const maps::ECellClass k = classify(c);
-			if (k == maps::ECellClass::unknown) continue;
-			// Cells inside closed obstacles or outside the building are not scored.
-			if (!truth.reachable.count(c) && !truth.dilated.count(c)) continue;
-			++s.known;
-			if (k == maps::ECellClass::occupied)
-			{
-				++s.occupied;
-				occupiedCells.insert(c);
-				if (truth.dilated.count(c))
-					++s.correct;
-				else
-					++s.false_occupied;
-			}
-			else if (!truth.occupied.count(c))
-				++s.correct;
-		}
-	for (const auto& w : truth.nearPath)
-	{
-		++s.walls_near;
-		bool found = false;
-		for (int dy = -1; dy <= 1 && !found; ++dy)
-			for (int dx = -1; dx <= 1 && !found; ++dx) found = occupiedCells.count({w.gx + dx, w.gy + dy}) > 0;
-		s.walls_found += found;
-	}
-	return s;
+	return [&truth](const maps::TGlobalCell& c) {
+		if (truth.occupied.count(c)) return benchdata::ECellClass::occupied;
+		return truth.reachable.count(c) ? benchdata::ECellClass::free : benchdata::ECellClass::unknown;
+	};
 }
 
-TTruthScore scoreOurs(const maps::CTiledOccupancyGrid& g, const TTruth& truth)
+benchdata::TMapScore scoreOurs(const maps::CTiledOccupancyGrid& g, const TTruth& truth)
 {
-	return scoreAgainstTruth(g.observedBounds(), truth, [&](const maps::TGlobalCell& c) {
-		return g.isObserved(c) ? maps::classifyOccupancy(g.occupancyProbability(c), 0.01) : maps::ECellClass::unknown;
-	});
+	return benchdata::scoreMap(benchdata::cellClassesOf(g), truthClasses(truth), truth.area);
 }
 
-TTruthScore scoreMrpt(const mrpt::maps::COccupancyGridMap2D& m, const maps::CTiledGridGeometry& geo,
-					  const TTruth& truth)
+benchdata::TMapScore scoreMrpt(const mrpt::maps::COccupancyGridMap2D& m, const maps::CTiledGridGeometry& geo,
+							   const TTruth& truth)
 {
-	const maps::TCellBounds b{geo.cellOf(m.getXMin() + 1e-6, 0).gx, geo.cellOf(m.getXMax() - 1e-6, 0).gx,
-							  geo.cellOf(0, m.getYMin() + 1e-6).gy, geo.cellOf(0, m.getYMax() - 1e-6).gy};
-	return scoreAgainstTruth(b, truth, [&](const maps::TGlobalCell& c) {
-		const auto p = geo.cellCentre(c);
-		return maps::classifyOccupancy(1.0 - m.getPos(static_cast<float>(p.x), static_cast<float>(p.y)), 0.01);
-	});
+	return benchdata::scoreMap(benchdata::cellClassesOf(m, geo), truthClasses(truth), truth.area);
 }
 
 // ------------------------------------------------------------------ map building
@@ -382,7 +321,7 @@ const char* kCorridorPath = "11 1; 14 0.5; 14 2.5; 11 1; 1 1";
 struct TSonarModelTotals
 {
 	double fast_s = 0, standard_s = 0, whole_tile_s = 0;
-	size_t fast_known = 0, fast_correct = 0, standard_known = 0, standard_correct = 0;
+	benchdata::TMapScore fast, standard;  //!< pooled over the runs
 };
 
 CReportTable sonarMapTable()
@@ -392,16 +331,18 @@ CReportTable sonarMapTable()
 									{"updates", 8},
 									{"ms/update", 12},
 									{"agreement", 11},
+									{"agree(known)", 14},
 									{"known", 9},
 									{"false occ", 11},
 									{"walls found", 13}});
 }
 
 void printSonarMapRow(const CReportTable& table, const std::string& run, const std::string& map, size_t updates,
-					  double msPerUpdate, const TTruthScore& s)
+					  double msPerUpdate, const benchdata::TMapScore& s)
 {
 	table.printRow({run, map, std::to_string(updates), fixed(msPerUpdate, 3), fixed(s.agreement(), 4),
-					std::to_string(s.known), std::to_string(s.false_occupied), fixed(s.wallsFound(), 3)});
+					fixed(s.agreementOfOursKnown(), 4), std::to_string(s.ours_known), std::to_string(s.false_occupied),
+					fixed(s.wallsFound(), 3)});
 }
 
 /** Sonar only: the fast and the standard model (and the standard one over the
@@ -426,9 +367,9 @@ void measureSonarModels(const TSimRun& run, const TTruth& truth, int repetitions
 	insertSonars(fastMap, run.sonars, fast);
 	insertSonars(stdMap, run.sonars, standard);
 	totals.fast_s += tFast, totals.standard_s += tStd, totals.whole_tile_s += tWhole;
-	const TTruthScore sf = scoreOurs(fastMap, truth), ss = scoreOurs(stdMap, truth);
-	totals.fast_known += sf.known, totals.fast_correct += sf.correct;
-	totals.standard_known += ss.known, totals.standard_correct += ss.correct;
+	const benchdata::TMapScore sf = scoreOurs(fastMap, truth), ss = scoreOurs(stdMap, truth);
+	totals.fast.add(sf);
+	totals.standard.add(ss);
 	printSonarMapRow(table, run.name, "sonar fast", n, 1e3 * tFast / n, sf);
 	printSonarMapRow(table, run.name, "sonar standard", n, 1e3 * tStd / n, ss);
 	printSonarMapRow(table, run.name, "  (whole tile)", n, 1e3 * tWhole / n, scoreOurs(wholeTileMap, truth));
@@ -474,7 +415,7 @@ void scoreFusedMaps(const TSimRun& run, const TTruth& truth, const CReportTable&
 struct TLaserComparison
 {
 	std::string run;
-	TTruthScore ours, mrpt;
+	benchdata::TMapScore ours, mrpt;
 	double ours_us = 0, mrpt_us = 0;  //!< insertion time per scan
 };
 
@@ -504,7 +445,7 @@ TLaserComparison compareLaserWithMrpt(const TSimRun& run, const TTruth& truth, i
 /** The pooled laser comparison: agreement of each map, insertion time summed over runs. */
 struct TLaserTotals
 {
-	TTruthScore ours, mrpt;
+	benchdata::TMapScore ours, mrpt;  //!< pooled over the runs
 	double ours_us = 0, mrpt_us = 0;
 };
 
@@ -526,8 +467,8 @@ TLaserTotals printLaserComparison(const std::vector<TLaserComparison>& rows)
 						std::to_string(r.ours.false_occupied), std::to_string(r.mrpt.false_occupied),
 						fixed(r.ours_us, 1), fixed(r.mrpt_us, 1)});
 		t.ours_us += r.ours_us, t.mrpt_us += r.mrpt_us;
-		t.ours.known += r.ours.known, t.ours.correct += r.ours.correct;
-		t.mrpt.known += r.mrpt.known, t.mrpt.correct += r.mrpt.correct;
+		t.ours.add(r.ours);
+		t.mrpt.add(r.mrpt);
 	}
 	return t;
 }
@@ -640,8 +581,7 @@ void printSonarKeys(const TLaserTotals& laser, const TSparseMemory& sparse, cons
 		"sonar_standard_whole_tile_ms_per_update", 1e3 * models.whole_tile_s / sonarUpdates)(
 		"sonar_fast_vs_whole_tile_standard_speedup", models.whole_tile_s / models.fast_s)(
 		"sonar_fast_vs_standard_speedup", models.standard_s / models.fast_s)(
-		"sonar_fast_cell_agreement", static_cast<double>(models.fast_correct) / models.fast_known)(
-		"sonar_standard_cell_agreement", static_cast<double>(models.standard_correct) / models.standard_known)(
+		"sonar_fast_cell_agreement", models.fast.agreement())("sonar_standard_cell_agreement", models.standard.agreement())(
 		"tbf_precision", tbf.precision())("tbf_recall", tbf.recall());
 }
 }  // namespace

@@ -3,7 +3,7 @@
  * sim.rawlog, ground_truth.tum, gt_map.gridmap.gz, corners.csv), default
  * pose estimation, against ground truth:
  *   - map agreement with the ground-truth map (5 cm, resampled onto our
- *     0.1 m cells by maps::resampleOntoOurCells: a cell is occupied if any
+ *     0.1 m cells by benchdata::resampleOntoOurCells: a cell is occupied if any
  *     wall passes through it) for the laser-only map and the laser+sonar maps
  *     (fast model with weights 0.1 / 0.05 / 0.02, standard model 0.1) and
  *     the sonar-only map, all over the same cells (the union of the observed
@@ -19,13 +19,14 @@
  *   - the time of the sonar stages per ring observation.
  * The map frame is placed on the truth with the first true pose. */
 #include "bench_common.h"
+#include "bench_report.h"
 
 #include <hslam/common/config_overrides.h>
 #include <hslam/common/ini_file.h>
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/eval/point_landmark_score.h>
 #include <hslam/io/rawlog_scans.h>
-#include <hslam/maps/grid_comparison.h>
+#include <hslam/benchdata/map_scoring.h>
 #include <hslam/sim/scene.h>
 #include <hslam/slam/CMappingPipeline.h>
 #include <mrpt/io/CFileGZInputStream.h>
@@ -33,7 +34,6 @@
 
 #include <chrono>
 #include <filesystem>
-#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -91,13 +91,50 @@ std::vector<sim::TCircle> staticCircles(const std::string& sample)
 	return sim::loadSceneFile("config_ini/" + scene).world.circles();
 }
 
-void printRow(const std::string& sample, const std::string& name, const maps::TCellAgreement& a, double msPerRing)
+CReportTable mapTable()
 {
-	std::cout << std::left << std::setw(10) << sample << std::setw(26) << name << std::right << std::fixed
-			  << std::setprecision(4) << std::setw(10) << a.fraction() << std::setw(13) << a.fractionOfOursKnown()
-			  << std::setw(8) << a.ours_known << std::setw(10) << a.occupied_only_ours << std::setw(8)
-			  << std::setprecision(3) << a.occupiedFound() << std::setw(10) << std::setprecision(4) << msPerRing
-			  << "\n";
+	return CReportTable(std::cout, {{"sample", 10, true},
+									{"map", 26, true},
+									{"agreement", 10},
+									{"agree(known)", 13},
+									{"known", 8},
+									{"false occ", 10},
+									{"walls", 8},
+									{"ms/ring", 10}});
+}
+
+void printRow(const std::string& sample, const std::string& name, const benchdata::TMapScore& a, double msPerRing)
+{
+	mapTable().printRow({sample, name, fixed(a.agreement(), 4), fixed(a.agreementOfOursKnown(), 4),
+						 std::to_string(a.ours_known), std::to_string(a.false_occupied), fixed(a.wallsFound(), 3),
+						 fixed(msPerRing, 4)});
+}
+
+/** Rows of the TBF table (its header is printed with the rows at the end). */
+CReportTable tbfTable(std::ostream& out)
+{
+	return CReportTable(out, {{"sample", 10, true},
+							  {"support", 8},
+							  {"corners", 9},
+							  {"walls", 7},
+							  {"circles", 9},
+							  {"prec@0.2", 10},
+							  {"prec@0.3", 10},
+							  {"wall rec", 11},
+							  {"circle rec", 11},
+							  {"   (rec@0.3 m)", 0}});
+}
+
+CReportTable costTable(std::ostream& out)
+{
+	return CReportTable(out, {{"sample", 10, true},
+							  {"laser-only s", 12},
+							  {"fused s", 12},
+							  {"rings", 8},
+							  {"update ms", 11},
+							  {"tbf ms/ring", 11},
+							  {"sonar %", 10},
+							  {"sensor maps %", 10}});
 }
 
 /** Every run of kRuns on one sample's rawlog; `cells` gets the union of their observed areas. */
@@ -128,14 +165,14 @@ void printMapRows(const std::string& sample, const std::vector<TRunResult>& runs
 {
 	for (const auto& r : runs)
 	{
-		const auto a = maps::compareWithMrptGrid(r.pipeline->grid(), truthGrid);
+		const auto a = benchdata::scoreMap(r.pipeline->grid(), truthGrid);
 		printRow(sample, r.name, a, stageMean(r.pipeline->timer(), "sonar_update"));
 		if (&r == &runs[0])
 			totals.laserAgreed += a.agreed, totals.laserCompared += a.compared, totals.laserKnown += a.ours_known;
 		if (&r == &runs[1])
 			totals.fusedAgreed += a.agreed, totals.fusedCompared += a.compared, totals.fusedKnown += a.ours_known;
 	}
-	printRow(sample, "sonar only (fast, w=1)", maps::compareWithMrptGrid(*runs[1].pipeline->sonarOnlyMap(), truthGrid),
+	printRow(sample, "sonar only (fast, w=1)", benchdata::scoreMap(*runs[1].pipeline->sonarOnlyMap(), truthGrid),
 			 0.0);
 }
 
@@ -164,10 +201,10 @@ void scoreTbfCorners(const std::string& sample, const std::string& dir, const sl
 		const auto s3 = eval::scorePointLandmarks(found, allPoints, 0.3, oursInTruth, allRadii);
 		const auto w3 = eval::scorePointLandmarks(found, wallCorners, 0.3, oursInTruth);
 		const auto c3 = eval::scorePointLandmarks(found, circles, 0.3, oursInTruth, circleRadii);
-		table << std::left << std::setw(10) << sample << std::right << std::setw(8) << support << std::setw(9)
-			  << found.size() << std::setw(7) << wallCorners.size() << std::setw(9) << circles.size() << std::fixed
-			  << std::setprecision(3) << std::setw(10) << s2.precision() << std::setw(10) << s3.precision()
-			  << std::setw(11) << w3.recall() << std::setw(11) << c3.recall() << "\n";
+		tbfTable(table).printRow({sample, std::to_string(support), std::to_string(found.size()),
+								  std::to_string(wallCorners.size()), std::to_string(circles.size()),
+								  fixed(s2.precision(), 3), fixed(s3.precision(), 3), fixed(w3.recall(), 3),
+								  fixed(c3.recall(), 3), ""});
 		if (support == minSupport) totals.cornersFound += s3.found, totals.cornersNear += s3.found_near_truth;
 	}
 }
@@ -183,22 +220,22 @@ void printCostRow(const std::string& sample, const std::vector<TRunResult>& runs
 	const double sonarMean = stageMean(fused.timer(), "sonar_update", &sonarTotal);
 	const double tbfMean = stageMean(fused.timer(), "sonar_corners", &tbfTotal);
 	const double jobMs = 1e3 * runs[1].seconds;
-	table << std::left << std::setw(10) << sample << std::right << std::fixed << std::setprecision(2) << std::setw(12)
-		  << runs[0].seconds << std::setw(12) << runs[1].seconds << std::setw(8) << fused.counters().sonar_observations
-		  << std::setprecision(4) << std::setw(11) << sonarMean << std::setw(11) << tbfMean << std::setprecision(1)
-		  << std::setw(10) << 100.0 * (sonarTotal + tbfTotal) / jobMs << std::setw(10)
-		  << 100.0 * (gridTotal + sonarTotal) / jobMs << "\n";
+	costTable(table).printRow({sample, fixed(runs[0].seconds, 2), fixed(runs[1].seconds, 2),
+							   std::to_string(fused.counters().sonar_observations), fixed(sonarMean, 4),
+							   fixed(tbfMean, 4), fixed(100.0 * (sonarTotal + tbfTotal) / jobMs, 1),
+							   fixed(100.0 * (gridTotal + sonarTotal) / jobMs, 1)});
 }
 
 void printTotals(const TTotals& totals)
 {
-	std::cout << "\nsonar_batch_laser_only_agreement=" << static_cast<double>(totals.laserAgreed) / totals.laserCompared
-			  << "\nsonar_batch_fused_agreement=" << static_cast<double>(totals.fusedAgreed) / totals.fusedCompared
-			  << "\nsonar_batch_laser_only_known_agreement=" << static_cast<double>(totals.laserAgreed) / totals.laserKnown
-			  << "\nsonar_batch_fused_known_agreement=" << static_cast<double>(totals.fusedAgreed) / totals.fusedKnown
-			  << "\nsonar_batch_tbf_precision_0_3m="
-			  << (totals.cornersFound ? static_cast<double>(totals.cornersNear) / totals.cornersFound : 0.0)
-			  << "\n";
+	std::cout << "\n";
+	CKeyValueLines(std::cout, 4)("sonar_batch_laser_only_agreement",
+								 static_cast<double>(totals.laserAgreed) / totals.laserCompared)(
+		"sonar_batch_fused_agreement", static_cast<double>(totals.fusedAgreed) / totals.fusedCompared)(
+		"sonar_batch_laser_only_known_agreement", static_cast<double>(totals.laserAgreed) / totals.laserKnown)(
+		"sonar_batch_fused_known_agreement", static_cast<double>(totals.fusedAgreed) / totals.fusedKnown)(
+		"sonar_batch_tbf_precision_0_3m",
+		totals.cornersFound ? static_cast<double>(totals.cornersNear) / totals.cornersFound : 0.0);
 }
 }  // namespace
 
@@ -206,28 +243,26 @@ int runSonarBatchSuite(const std::string& dataDir)
 {
 	const std::string ini = "config_ini/hslam-default.ini";
 	if (!std::filesystem::exists(ini)) throw std::runtime_error(ini + ": run hslam-bench from the repository root");
-	std::cout << "Sonar in the batch job (CMappingPipeline, default pose estimation) vs ground truth, 0.1 m cells\n"
-			  << std::left << std::setw(10) << "sample" << std::setw(26) << "map" << std::right << std::setw(10)
-			  << "agreement" << std::setw(13) << "agree(known)" << std::setw(8) << "known" << std::setw(10)
-			  << "false occ" << std::setw(8) << "walls" << std::setw(10) << "ms/ring" << "\n";
+	std::cout << "Sonar in the batch job (CMappingPipeline, default pose estimation) vs ground truth, 0.1 m cells\n";
+	mapTable().printHeader();
 	TTotals totals;
-	std::ostringstream tbfTable, costTable;
+	std::ostringstream tbfRows, costRows;
 	for (const std::string sample : {"lab", "corridor", "umbmark", "floor"})
 	{
 		const std::string dir = dataDir + "/" + sample;
 		maps::TCellBounds cells;
 		const std::vector<TRunResult> runs = runConfigs(ini, dir, cells);
 		printMapRows(sample, runs, truthMapOnOurCells(dir, *runs[0].pipeline, cells), totals);
-		scoreTbfCorners(sample, dir, *runs[1].pipeline, ourMapFrameInTruth(dir, *runs[0].pipeline), tbfTable, totals);
-		printCostRow(sample, runs, costTable);
+		scoreTbfCorners(sample, dir, *runs[1].pipeline, ourMapFrameInTruth(dir, *runs[0].pipeline), tbfRows, totals);
+		printCostRow(sample, runs, costRows);
 	}
 	std::cout << "   agreement over the union of the observed areas of all maps; walls = truth-occupied cells found\n"
-			  << "\nTBF corners vs true point features: wall corners (corners.csv) + static circles (scene)\n"
-			  << "sample    support  corners  walls  circles  prec@0.2  prec@0.3  wall rec  circle rec   (rec@0.3 m)\n"
-			  << tbfTable.str()
-			  << "\nCost in the job (laser+sonar fast w=0.1 run, with the sensor maps kept)\n"
+			  << "\nTBF corners vs true point features: wall corners (corners.csv) + static circles (scene)\n";
+	// Headers as first published (docs/tiledmap.md), wider than some columns.
+	std::cout << "sample    support  corners  walls  circles  prec@0.2  prec@0.3  wall rec  circle rec   (rec@0.3 m)\n"
+			  << tbfRows.str() << "\nCost in the job (laser+sonar fast w=0.1 run, with the sensor maps kept)\n"
 			  << "sample     laser-only s  fused s   rings  update ms  tbf ms/ring  sonar %  sensor maps %\n"
-			  << costTable.str();
+			  << costRows.str();
 	printTotals(totals);
 	return 0;
 }

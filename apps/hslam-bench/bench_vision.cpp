@@ -14,6 +14,7 @@
  * removed, <= 2 px for pure translation. */
 #include "bench_vision.h"
 
+#include "bench_report.h"
 #include "bench_vision_pairs.h"
 
 #include <filesystem>
@@ -68,22 +69,30 @@ double percentile(std::vector<double> v, double q)
 	return v[std::min(v.size() - 1, static_cast<size_t>(q * static_cast<double>(v.size())))];
 }
 
+CReportTable foeTable()
+{
+	return CReportTable(std::cout, {{"case", 44, true},
+									{"pairs", 6},
+									{"no FOE", 8},
+									{"lsq (p90)", 16},
+									{"lsq x", 9},
+									{"vote x", 9},
+									{"essential", 13},
+									{"E fail", 8}});
+}
+
 void printFoeHeader()
 {
-	std::cout << "FOE error (px) against the exact FOE, median over pairs (lsq p90 in brackets)\n"
-			  << std::left << std::setw(44) << "case" << std::right << std::setw(6) << "pairs" << std::setw(8)
-			  << "no FOE" << std::setw(16) << "lsq (p90)" << std::setw(9) << "lsq x" << std::setw(9) << "vote x"
-			  << std::setw(13) << "essential" << std::setw(8) << "E fail" << "\n";
+	std::cout << "FOE error (px) against the exact FOE, median over pairs (lsq p90 in brackets)\n";
+	foeTable().printHeader();
 }
 
 void printFoeRow(const std::string& name, const TFoeRow& r)
 {
-	std::ostringstream lsq;
-	lsq << std::fixed << std::setprecision(2) << vision::medianOf(r.lsq) << " (" << percentile(r.lsq, 0.9) << ")";
-	std::cout << std::left << std::setw(44) << name << std::right << std::setw(6) << r.pairs << std::setw(8)
-			  << r.invalid << std::setw(16) << lsq.str() << std::fixed << std::setprecision(2) << std::setw(9)
-			  << vision::medianOf(r.lsq_x) << std::setw(9) << vision::medianOf(r.vote_x) << std::setw(13)
-			  << vision::medianOf(r.peer) << std::setw(8) << r.peer_invalid << "\n";
+	const std::string lsq = fixed(vision::medianOf(r.lsq), 2) + " (" + fixed(percentile(r.lsq, 0.9), 2) + ")";
+	foeTable().printRow({name, std::to_string(r.pairs), std::to_string(r.invalid), lsq, fixed(vision::medianOf(r.lsq_x), 2),
+						 fixed(vision::medianOf(r.vote_x), 2), fixed(vision::medianOf(r.peer), 2),
+						 std::to_string(r.peer_invalid)});
 }
 
 /** The learned model trained on 30 plane-warp turns (as hslam-vision-train --synthetic does, without a held-out part). */
@@ -167,16 +176,21 @@ TResidual rotationResiduals(const vision::TMountedCamera& camera, const vision::
 
 void printTimes(const std::vector<TStageTimes>& times)
 {
-	std::cout << "\nPer-frame time (ms; one OpenCV thread; best of the repetitions per pair, mean over 10 pairs)\n"
-			  << std::left << std::setw(20) << "pairs" << std::right << std::setw(9) << "detect" << std::setw(9)
-			  << "track" << std::setw(10) << "rot anal" << std::setw(10) << "rot lrnd" << std::setw(8) << "FOE"
-			  << std::setw(8) << "cues" << std::setw(9) << "total" << std::setw(12) << "essential" << "\n";
+	std::cout << "\nPer-frame time (ms; one OpenCV thread; best of the repetitions per pair, mean over 10 pairs)\n";
+	const CReportTable table(std::cout, {{"pairs", 20, true},
+										 {"detect", 9},
+										 {"track", 9},
+										 {"rot anal", 10},
+										 {"rot lrnd", 10},
+										 {"FOE", 8},
+										 {"cues", 8},
+										 {"total", 9},
+										 {"essential", 12}});
+	table.printHeader();
 	for (const auto& t : times)
-		std::cout << std::left << std::setw(20) << (t.source + " " + std::to_string(t.width) + "x" + std::to_string(t.height))
-				  << std::right << std::fixed << std::setprecision(3) << std::setw(9) << t.detect_ms << std::setw(9)
-				  << t.track_ms << std::setw(10) << t.rotation_analytic_ms << std::setw(10) << t.rotation_learned_ms
-				  << std::setw(8) << t.foe_ms << std::setw(8) << t.cues_ms << std::setw(9) << t.total_ms()
-				  << std::setw(12) << t.peer_ms << "\n";
+		table.printRow({t.source + " " + std::to_string(t.width) + "x" + std::to_string(t.height), fixed(t.detect_ms, 3),
+						fixed(t.track_ms, 3), fixed(t.rotation_analytic_ms, 3), fixed(t.rotation_learned_ms, 3),
+						fixed(t.foe_ms, 3), fixed(t.cues_ms, 3), fixed(t.total_ms(), 3), fixed(t.peer_ms, 3)});
 	std::cout << "(total = detect + track + analytic rotation + FOE (least squares and vote) + cues; essential = "
 				 "findEssentialMat + recoverPose on the same tracks, i.e. it replaces rotation + FOE)\n";
 }
@@ -184,22 +198,22 @@ void printTimes(const std::vector<TStageTimes>& times)
 void printKeyValues(std::map<std::string, TFoeRow>& rows, const TResidual& res, const std::vector<TStageTimes>& t)
 {
 	const auto med = [&](const std::string& key) { return vision::medianOf(rows[key].lsq); };
-	std::cout << std::setprecision(3) << "\nfoe_error_px_median=" << med("plane_tr_640x480")
-			  << "\nfoe_error_translation_px_median=" << med("plane_t_640x480")
-			  << "\nfoe_error_no_removal_px_median=" << med("plane_tr_none_640x480")
-			  << "\nfoe_error_learned_px_median=" << med("plane_tr_learned_640x480")
-			  << "\nfoe_error_learned_on_axis_px_median=" << med("axis_tr_learned")
-			  << "\nfoe_error_320_px_median=" << med("plane_tr_320x240")
-			  << "\nfoe_error_sim_px_median=" << med("sim_tr_640x480")
-			  << "\nfoe_error_sim_translation_px_median=" << med("sim_t_640x480")
-			  << "\nfoe_lsq_x_error_px_median=" << vision::medianOf(rows["plane_tr_640x480"].lsq_x)
-			  << "\nfoe_vote_x_error_px_median=" << vision::medianOf(rows["plane_tr_640x480"].vote_x)
-			  << "\nfoe_essential_error_px_median=" << vision::medianOf(rows["plane_tr_640x480"].peer)
-			  << "\nfoe_essential_sim_error_px_median=" << vision::medianOf(rows["sim_tr_640x480"].peer)
-			  << "\nrotation_residual_px_rms=" << res.analytic << "\nrotation_residual_learned_px_rms=" << res.learned
-			  << "\nrotation_residual_none_px_rms=" << res.raw << "\nvision_ms_per_frame=" << t[0].total_ms()
-			  << "\nvision_ms_per_frame_320=" << t[1].total_ms() << "\nvision_ms_per_frame_plane=" << t[2].total_ms()
-			  << "\nessential_ms_per_frame=" << t[0].peer_ms << "\nessential_ms_per_frame_320=" << t[1].peer_ms << "\n";
+	std::cout << "\n";
+	CKeyValueLines(std::cout, 3)("foe_error_px_median", med("plane_tr_640x480"))(
+		"foe_error_translation_px_median", med("plane_t_640x480"))("foe_error_no_removal_px_median",
+																	med("plane_tr_none_640x480"))(
+		"foe_error_learned_px_median", med("plane_tr_learned_640x480"))("foe_error_learned_on_axis_px_median",
+																		 med("axis_tr_learned"))(
+		"foe_error_320_px_median", med("plane_tr_320x240"))("foe_error_sim_px_median", med("sim_tr_640x480"))(
+		"foe_error_sim_translation_px_median", med("sim_t_640x480"))(
+		"foe_lsq_x_error_px_median", vision::medianOf(rows["plane_tr_640x480"].lsq_x))(
+		"foe_vote_x_error_px_median", vision::medianOf(rows["plane_tr_640x480"].vote_x))(
+		"foe_essential_error_px_median", vision::medianOf(rows["plane_tr_640x480"].peer))(
+		"foe_essential_sim_error_px_median", vision::medianOf(rows["sim_tr_640x480"].peer))(
+		"rotation_residual_px_rms", res.analytic)("rotation_residual_learned_px_rms", res.learned)(
+		"rotation_residual_none_px_rms", res.raw)("vision_ms_per_frame", t[0].total_ms())(
+		"vision_ms_per_frame_320", t[1].total_ms())("vision_ms_per_frame_plane", t[2].total_ms())(
+		"essential_ms_per_frame", t[0].peer_ms)("essential_ms_per_frame_320", t[1].peer_ms);
 }
 }  // namespace
 

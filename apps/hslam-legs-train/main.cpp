@@ -9,7 +9,7 @@
 #include <hslam/common/command_line.h>
 #include <hslam/common/version.h>
 #include <hslam/dynamic/dynamic_profiles.h>
-#include <hslam/dynamic/leg_training.h>
+#include <hslam/benchdata/leg_training.h>
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
@@ -33,6 +33,7 @@ void printImportance(const hslam::dynamic::CLegClassifier& model)
 int main(int argc, char** argv)
 {
 	using namespace hslam::dynamic;
+	using namespace hslam::benchdata;
 	try
 	{
 		TCLAP::CmdLine cmd("Trains the leg classifier on labelled laser data and writes the model file.", ' ', hslam::common::versionText());

@@ -7,7 +7,7 @@
  */
 #include <hslam/common/data_paths.h>
 #include <hslam/common/version.h>
-#include <hslam/slam/CBatchProcessor.h>
+#include <hslam/batch/CBatchProcessor.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 
 #include <iostream>
@@ -36,7 +36,7 @@ int main(int argc, char** argv)
 	try
 	{
 		if (!cmd.parse(argc, argv)) return 0;  // --help or --version was printed
-		hslam::slam::TBatchRequest request;
+		hslam::batch::TBatchRequest request;
 		request.config_file = hslam::common::resolveDataFile(config.getValue());
 		request.overrides = set.getValue();
 		request.input_rawlog = input.getValue();
@@ -44,7 +44,7 @@ int main(int argc, char** argv)
 		request.ground_truth_tum = groundTruth.getValue();
 		request.show_progress = !quiet.getValue();
 		request.overwrite = overwrite.getValue();
-		hslam::slam::CBatchProcessor processor(request, std::cout, std::cerr);
+		hslam::batch::CBatchProcessor processor(request, std::cout, std::cerr);
 		const auto result = processor.run();
 		if (!result.input_error.empty()) return 2;
 		if (result.counters.laser_scans == 0)

@@ -4,6 +4,7 @@
 #include <hslam/common/parse_number.h>
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/io/CRawlogReader.h>
+#include <hslam/io/csv_line.h>
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationOdometry.h>
@@ -19,12 +20,11 @@ namespace hslam::apps
 {
 namespace
 {
+/** The cells of a CSV line (io::splitCsvLine), trimmed. */
 std::vector<std::string> splitCsv(const std::string& line)
 {
-	std::vector<std::string> out;
-	std::stringstream ss(line);
-	std::string cell;
-	while (std::getline(ss, cell, ',')) out.push_back(common::trim(cell));
+	std::vector<std::string> out = io::splitCsvLine(line);
+	for (auto& cell : out) cell = common::trim(cell);
 	return out;
 }
 

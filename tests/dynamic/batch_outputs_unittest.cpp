@@ -1,5 +1,5 @@
 #include <gtest/gtest.h>
-#include <hslam/slam/CBatchProcessor.h>
+#include <hslam/batch/CBatchProcessor.h>
 #include <hslam/testing/temp_dir.h>
 #include <hslam/testing/test_paths.h>
 #include <mrpt/img/CImage.h>
@@ -12,7 +12,7 @@
 TEST(DynamicBatchOutputs, TracksCsvAndDebugImages)
 {
 	hslam::testing::CTempDir dir;
-	hslam::slam::TBatchRequest request;
+	hslam::batch::TBatchRequest request;
 	request.config_file = std::string(HSLAM_SOURCE_DIR) + "/config_ini/hslam-legs-hokuyo-rules.ini";
 	request.overrides = {"laser_model.max_range_m=5.5", "output.dynamic_debug_images=true",
 						 "output.dynamic_debug_max_images=5", "output.write_tiles=false"};
@@ -20,7 +20,7 @@ TEST(DynamicBatchOutputs, TracksCsvAndDebugImages)
 	request.output_dir = dir.file("out");
 	request.show_progress = false;
 	std::ostringstream out, err;
-	hslam::slam::CBatchProcessor(request, out, err).run();
+	hslam::batch::CBatchProcessor(request, out, err).run();
 	EXPECT_NE(out.str().find("tracks.csv"), std::string::npos);
 
 	std::ifstream csv(dir.file("out/tracks.csv"));

@@ -9,10 +9,10 @@
 #include <hslam/dynamic/CLegClassifier.h>
 #include <hslam/dynamic/CLegDetector.h>
 #include <hslam/dynamic/leg_clusters.h>
-#include <hslam/dynamic/leg_dataset.h>
+#include <hslam/benchdata/leg_dataset.h>
 #include <hslam/dynamic/leg_features.h>
 #include <hslam/dynamic/dynamic_profiles.h>
-#include <hslam/dynamic/leg_training.h>
+#include <hslam/benchdata/leg_training.h>
 #include <hslam/testing/test_paths.h>
 #include <mrpt/random/RandomGenerators.h>
 
@@ -22,6 +22,7 @@
 #include <optional>
 
 using namespace hslam::dynamic;
+using namespace hslam::benchdata;
 using namespace hslam::dynamic::testutils;
 using mrpt::math::TPoint2D;
 using mrpt::poses::CPose2D;

@@ -5,14 +5,15 @@
  * by ICP odometry). */
 #include <gtest/gtest.h>
 #include <hslam/dynamic/dynamic_profiles.h>
-#include <hslam/dynamic/leg_scoring.h>
-#include <hslam/dynamic/leg_training.h>
+#include <hslam/benchdata/leg_scoring.h>
+#include <hslam/benchdata/leg_training.h>
 #include <hslam/matching/icp_odometry.h>
 #include <hslam/testing/test_paths.h>
 
 #include <iostream>
 
 using namespace hslam::dynamic;
+using namespace hslam::benchdata;
 
 TEST(LegFilterRealData, CrossValidatedLegsFoundWithFewFalseLegs)
 {

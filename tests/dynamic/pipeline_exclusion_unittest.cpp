@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 #include <hslam/common/options_io.h>
 #include <hslam/common/config_overrides.h>
-#include <hslam/dynamic/occupied_cells.h>
+#include <hslam/benchdata/map_scoring.h>
 #include <hslam/io/CRawlogReader.h>
 #include <hslam/maps/CLaserGridInserter.h>
 #include <hslam/slam/CMappingPipeline.h>
@@ -31,7 +31,7 @@ TResult mapDemo(bool exclude, size_t maxScans)
 	hslam::io::TRawlogEntry entry;
 	while (pipeline.counters().laser_scans < maxScans && reader.next(entry)) pipeline.processEntry(entry);
 	TResult r;
-	r.occupied = hslam::dynamic::occupiedCells(pipeline.grid()).size();
+	r.occupied = hslam::benchdata::occupiedCells(pipeline.grid()).size();
 	r.trackRows = pipeline.trackRows().size();
 	for (const auto& row : pipeline.trackRows()) r.dynamicRows += row.track.state == hslam::dynamic::ETrackState::dynamic;
 	EXPECT_EQ(pipeline.dynamicFilter() != nullptr, exclude);

@@ -12,6 +12,7 @@
 #include <algorithm>
 
 using namespace hslam::features;
+using namespace hslam::benchdata;
 using hslam::common::config_error;
 
 namespace

@@ -5,7 +5,7 @@
 #include "line_test_utils.h"
 
 #include <gtest/gtest.h>
-#include <hslam/features/line_scoring.h>
+#include <hslam/benchdata/line_scoring.h>
 #include <hslam/features/scan_points.h>
 #include <hslam/io/CRawlogReader.h>
 #include <hslam/io/carmen_import.h>
@@ -16,6 +16,7 @@
 #include <iostream>
 
 using namespace hslam::features;
+using namespace hslam::benchdata;
 
 namespace
 {

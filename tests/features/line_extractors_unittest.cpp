@@ -4,8 +4,8 @@
 #include "line_test_utils.h"
 
 #include <gtest/gtest.h>
-#include <hslam/features/line_scenes.h>
-#include <hslam/features/line_scoring.h>
+#include <hslam/benchdata/line_scenes.h>
+#include <hslam/benchdata/line_scoring.h>
 #include <hslam/features/scan_points.h>
 #include <mrpt/poses/CPose3D.h>
 
@@ -15,6 +15,7 @@
 #include <set>
 
 using namespace hslam::features;
+using namespace hslam::benchdata;
 using namespace hslam::features::test;
 
 class AllExtractors : public ::testing::TestWithParam<std::string>

@@ -4,10 +4,11 @@
 
 #include <gtest/gtest.h>
 #include <hslam/features/CDerivativeLineExtractor.h>
-#include <hslam/features/line_scoring.h>
+#include <hslam/benchdata/line_scoring.h>
 #include <hslam/features/segment_ops.h>
 
 using namespace hslam::features;
+using namespace hslam::benchdata;
 
 namespace
 {

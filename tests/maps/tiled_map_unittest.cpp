@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 #include <hslam/common/options_io.h>
 #include <hslam/maps/CTiledOccupancyGridMap2D.h>
-#include <hslam/maps/grid_comparison.h>
+#include <hslam/benchdata/map_scoring.h>
 #include <hslam/testing/temp_dir.h>
 #include <hslam/testing/test_paths.h>
 #include <mrpt/config/CConfigFile.h>
@@ -190,7 +190,7 @@ TEST(TiledMap, MergedViewMatchesTheTiles)
 	CTiledOccupancyGridMap2D map;
 	insertCorridor(map, -12.0, 12.0, true);  // crosses the tile borders at +-10 m
 	const auto merged = map.getAsMrptGrid();
-	const TCellAgreement agreement = compareWithMrptGrid(map.grid(), merged);
+	const hslam::benchdata::TMapScore agreement = hslam::benchdata::scoreMap(map.grid(), merged);
 	EXPECT_GT(agreement.compared, 4000u);
 	EXPECT_EQ(agreement.agreed, agreement.compared);
 	// MRPT stores p(free): a wall cell is dark, the corridor middle light.

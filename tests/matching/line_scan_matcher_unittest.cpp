@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 #include <hslam/features/CLineExtractor.h>
 #include <hslam/features/scan_points.h>
-#include <hslam/features/synthetic_scan.h>
+#include <hslam/benchdata/synthetic_scan.h>
 #include <hslam/matching/CLineScanMatcher.h>
 #include <hslam/matching/scan_points.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -17,10 +17,10 @@ using mrpt::poses::CPose2D;
 namespace
 {
 /** An irregular room (8 walls, no symmetry) plus a pillar, 10 m across. */
-std::vector<features::TWall> room(double sigma)
+std::vector<benchdata::TWall> room(double sigma)
 {
 	const std::vector<mrpt::math::TPoint2D> corners{{-4, -3}, {5, -3}, {5, 1}, {3.5, 1}, {3.5, 4}, {-2, 4}, {-4, 2}};
-	std::vector<features::TWall> walls;
+	std::vector<benchdata::TWall> walls;
 	for (size_t i = 0; i < corners.size(); ++i) walls.push_back({corners[i], corners[(i + 1) % corners.size()], sigma});
 	walls.push_back({{1.0, 1.5}, {1.8, 1.5}, sigma});
 	walls.push_back({{1.8, 1.5}, {1.8, 2.3}, sigma});
@@ -29,7 +29,7 @@ std::vector<features::TWall> room(double sigma)
 
 matching::TLineScanFrame frameAt(const CPose2D& pose, double sigma, uint32_t seed)
 {
-	const auto sim = features::simulateScan(room(sigma), pose, features::TScanLayout{}, seed);
+	const auto sim = benchdata::simulateScan(room(sigma), pose, benchdata::TScanLayout{}, seed);
 	mrpt::config::CConfigFileMemory cfg;
 	const auto extractor = features::createLineExtractor("derivative", cfg, "line_extraction_derivative");
 	matching::TLineScanFrame f;

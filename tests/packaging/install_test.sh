@@ -10,7 +10,7 @@ cmake --install "$build" --prefix "$prefix" > "$prefix.install.log" 2>&1 || { ca
 for f in bin/hslam-process bin/hslam-carmen2rawlog bin/hslam-evaluate \
          lib/libhslam-maps.so lib/libhslam-slam.so lib/libhslam-common.so \
          lib/libhslam-hwdrivers-plugin.so lib/libhslam-maps-plugin.so \
-         include/hslam/maps/CTiledOccupancyGridMap2D.h include/hslam/slam/CBatchProcessor.h \
+         include/hslam/maps/CTiledOccupancyGridMap2D.h include/hslam/batch/CBatchProcessor.h \
          share/hslam/config_ini/hslam-default.ini share/hslam/config_ini/models/legs-hokuyo-forest.yml.gz \
          share/hslam/rawlog_samples/lab/sim.rawlog share/doc/hslam/README.md share/doc/hslam/install.md \
          lib/cmake/hslam/hslamConfig.cmake lib/cmake/hslam/hslamTargets.cmake; do

@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 #include <hslam/common/data_paths.h>
 #include <hslam/common/version.h>
-#include <hslam/slam/html_report.h>
-#include <hslam/slam/run_summary.h>
+#include <hslam/batch/html_report.h>
+#include <hslam/batch/run_summary.h>
 #include <hslam/testing/temp_dir.h>
 #include <hslam/testing/test_paths.h>
 #include <mrpt/version.h>
@@ -16,13 +16,13 @@ using namespace hslam;
 
 TEST(RunSummary, JsonWithoutReferenceHasNullAteAndEscapedWarnings)
 {
-	slam::TRunSummary s;
+	batch::TRunSummary s;
 	s.input = "in \"quoted\".rawlog";
 	s.scans = 12;
 	s.wall_s = 0.6;
 	s.ms_per_scan = 50.0;
 	s.warnings = {"3 odometry gaps (motion unknown)", "tab\there"};
-	const std::string json = slam::runSummaryToJson(s);
+	const std::string json = batch::runSummaryToJson(s);
 	EXPECT_NE(json.find("\"scans\": 12,"), std::string::npos) << json;
 	EXPECT_NE(json.find("\"ms_per_scan\": 50.000,"), std::string::npos) << json;
 	EXPECT_NE(json.find("\"input\": \"in \\\"quoted\\\".rawlog\","), std::string::npos) << json;
@@ -38,7 +38,7 @@ TEST(RunSummary, JsonWithoutReferenceHasNullAteAndEscapedWarnings)
 
 TEST(RunSummary, JsonWithReferenceCarriesAteAndTheEvaluationObject)
 {
-	slam::TRunSummary s;
+	batch::TRunSummary s;
 	eval::TTrajectoryErrors e;
 	e.matched = 7;
 	e.ate.position_m.count = 7;
@@ -46,7 +46,7 @@ TEST(RunSummary, JsonWithReferenceCarriesAteAndTheEvaluationObject)
 	e.ate.position_m.mean = 0.1;
 	e.ate.position_m.max = 0.25;
 	s.evaluation = e;
-	const std::string json = slam::runSummaryToJson(s);
+	const std::string json = batch::runSummaryToJson(s);
 	EXPECT_NE(json.find("\"ate_rmse_m\": 0.125,"), std::string::npos) << json;
 	EXPECT_NE(json.find("\"ate_max_m\": 0.25,"), std::string::npos) << json;
 	EXPECT_NE(json.find("\"matched_poses\": 7,"), std::string::npos) << json;
@@ -55,8 +55,8 @@ TEST(RunSummary, JsonWithReferenceCarriesAteAndTheEvaluationObject)
 
 TEST(HtmlReport, EscapesMarkup)
 {
-	EXPECT_EQ(slam::htmlEscape("a<b> & \"c\""), "a&lt;b&gt; &amp; &quot;c&quot;");
-	EXPECT_EQ(slam::htmlEscape("plain"), "plain");
+	EXPECT_EQ(batch::htmlEscape("a<b> & \"c\""), "a&lt;b&gt; &amp; &quot;c&quot;");
+	EXPECT_EQ(batch::htmlEscape("plain"), "plain");
 }
 
 TEST(DataPaths, TheBuildTreeMirrorsTheInstalledLayout)

@@ -4,8 +4,8 @@
 #include <hslam/common/options_io.h>
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/io/CRawlogReader.h>
-#include <hslam/maps/grid_comparison.h>
-#include <hslam/slam/CBatchProcessor.h>
+#include <hslam/benchdata/map_scoring.h>
+#include <hslam/batch/CBatchProcessor.h>
 #include <hslam/testing/temp_dir.h>
 #include <hslam/testing/test_paths.h>
 #include <mrpt/io/CFileGZInputStream.h>
@@ -80,9 +80,9 @@ TEST(BatchProcessor, MrptSampleRawlogEndToEnd)
 	for (unsigned y = 0; y < loaded.getSizeY(); ++y)
 		for (unsigned x = 0; x < loaded.getSizeX(); ++x)
 		{
-			const auto c = maps::classifyOccupancy(1.0 - loaded.getCell(x, y), 0.01);
-			occupied += c == maps::ECellClass::occupied;
-			free += c == maps::ECellClass::free;
+			const auto c = benchdata::classifyOccupancy(1.0 - loaded.getCell(x, y), 0.01);
+			occupied += c == benchdata::ECellClass::occupied;
+			free += c == benchdata::ECellClass::free;
 		}
 	EXPECT_GT(occupied, 200u);
 	EXPECT_GT(free, 5 * occupied);
@@ -211,7 +211,7 @@ TEST(BatchProcessor, AFailedOutputIsNamedAndLeavesNoPartialFile)
 	hslam::testing::CTempDir dir;
 	std::filesystem::create_directories(dir.file("out/pose_plot.png"));
 	std::ofstream(dir.file("out/pose_plot.png/keep.txt")) << "not ours";
-	slam::TBatchRequest request;
+	batch::TBatchRequest request;
 	request.config_file = kDefaultIni;
 	request.input_rawlog = kSample;
 	request.output_dir = dir.file("out");
@@ -221,7 +221,7 @@ TEST(BatchProcessor, AFailedOutputIsNamedAndLeavesNoPartialFile)
 	std::string message;
 	try
 	{
-		slam::CBatchProcessor(request, out, err).run();
+		batch::CBatchProcessor(request, out, err).run();
 	}
 	catch (const std::exception& e)
 	{

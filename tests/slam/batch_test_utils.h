@@ -1,7 +1,7 @@
-// Shared by the tests/slam programs: run the batch job as hslam-process does.
+// Shared by the tests/slam programs: run the batch job (libs/batch) as hslam-process does.
 #pragma once
 
-#include <hslam/slam/CBatchProcessor.h>
+#include <hslam/batch/CBatchProcessor.h>
 #include <hslam/testing/test_paths.h>
 
 #include <sstream>
@@ -14,16 +14,16 @@ inline const std::string kDefaultIni = std::string(HSLAM_SOURCE_DIR) + "/config_
 
 /** The batch job on `input` with the default INI plus `overrides`
  * ("SECTION.KEY=VALUE"), output into `outdir`, console output discarded. */
-inline TBatchResult runBatch(const std::string& input, const std::string& outdir,
+inline batch::TBatchResult runBatch(const std::string& input, const std::string& outdir,
 							 const std::vector<std::string>& overrides = {})
 {
-	TBatchRequest request;
+	batch::TBatchRequest request;
 	request.config_file = kDefaultIni;
 	request.overrides = overrides;
 	request.input_rawlog = input;
 	request.output_dir = outdir;
 	request.show_progress = false;
 	std::ostringstream out, err;
-	return CBatchProcessor(request, out, err).run();
+	return batch::CBatchProcessor(request, out, err).run();
 }
 }  // namespace hslam::slam::testing

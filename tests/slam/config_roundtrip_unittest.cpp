@@ -30,16 +30,16 @@ std::string fileBytes(const std::string& path)
 	return bytes.str();
 }
 
-slam::TBatchResult runWith(const std::string& ini, const std::vector<std::string>& overrides, const std::string& out)
+batch::TBatchResult runWith(const std::string& ini, const std::vector<std::string>& overrides, const std::string& out)
 {
-	slam::TBatchRequest request;
+	batch::TBatchRequest request;
 	request.config_file = ini;
 	request.overrides = overrides;
 	request.input_rawlog = kSample;
 	request.output_dir = out;
 	request.show_progress = false;
 	std::ostringstream stdoutText, stderrText;
-	return slam::CBatchProcessor(request, stdoutText, stderrText).run();
+	return batch::CBatchProcessor(request, stdoutText, stderrText).run();
 }
 
 /** Same value: equal numbers (0.10 = 0.1) or equal text. */

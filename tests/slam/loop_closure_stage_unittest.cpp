@@ -19,7 +19,7 @@
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/eval/evaluate_trajectory.h>
 #include <hslam/io/CRawlogReader.h>
-#include <hslam/maps/grid_comparison.h>
+#include <hslam/benchdata/map_scoring.h>
 #include <hslam/maps/grid_rendering.h>
 #include <hslam/slam/CMappingPipeline.h>
 #include <hslam/testing/temp_dir.h>
@@ -119,13 +119,13 @@ TEST(LoopClosureStage, RerenderedMapAgreesWithTheTruthAtLeastAsWellAsTheOnlineMa
 		if (auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(e.observation))
 			inserter.insert(reference, align + truthAt(truth, mrpt::Clock::toDouble(scan->timestamp)), *scan);
 	const auto refGrid = maps::toMrptGrid(reference, reference.observedBounds());
-	const auto before = maps::compareWithMrptGrid(online, refGrid);
-	const auto after = maps::compareWithMrptGrid(pipeline->grid(), refGrid);
-	std::cout << "cell agreement with the true-pose map: online " << before.fraction() << ", re-rendered "
-			  << after.fraction() << "; occupied found " << before.occupiedFound() << " -> " << after.occupiedFound()
+	const auto before = benchdata::scoreMap(online, refGrid);
+	const auto after = benchdata::scoreMap(pipeline->grid(), refGrid);
+	std::cout << "cell agreement with the true-pose map: online " << before.agreement() << ", re-rendered "
+			  << after.agreement() << "; occupied found " << before.wallsFound() << " -> " << after.wallsFound()
 			  << "\n";
-	EXPECT_GE(after.fraction(), before.fraction());
-	EXPECT_GE(after.occupiedFound(), before.occupiedFound());
+	EXPECT_GE(after.agreement(), before.agreement());
+	EXPECT_GE(after.wallsFound(), before.wallsFound());
 }
 
 TEST(LoopClosureStage, BatchWritesItsFilesAndMrptReadsTheGraph)

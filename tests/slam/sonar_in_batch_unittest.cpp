@@ -9,9 +9,9 @@
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/eval/point_landmark_score.h>
 #include <hslam/io/CRawlogReader.h>
-#include <hslam/maps/grid_comparison.h>
+#include <hslam/benchdata/map_scoring.h>
 #include <hslam/sim/scene.h>
-#include <hslam/slam/CBatchProcessor.h>
+#include <hslam/batch/CBatchProcessor.h>
 #include <hslam/slam/CSonarMappingStage.h>
 #include <hslam/testing/temp_dir.h>
 #include <hslam/testing/test_paths.h>
@@ -147,7 +147,7 @@ TEST(SonarInBatch, DisabledSonarMappingLeavesTheLaserMapUnchanged)
 		for (unsigned y = 0; y < g->getSizeY(); ++y)
 			for (unsigned x = 0; x < g->getSizeX(); ++x)
 				(g == &fused ? knownFused : knownLaser) +=
-					maps::classifyOccupancy(1.0 - g->getCell(x, y), 0.01) != maps::ECellClass::unknown;
+					benchdata::classifyOccupancy(1.0 - g->getCell(x, y), 0.01) != benchdata::ECellClass::unknown;
 	EXPECT_GT(knownFused, knownLaser + 500);  // sonar cones reach cells the 3 m laser did not (measured +886)
 }
 

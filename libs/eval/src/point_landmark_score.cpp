@@ -1,5 +1,6 @@
 #include <hslam/common/parse_number.h>
 #include <hslam/eval/point_landmark_score.h>
+#include <hslam/io/csv_line.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,13 +17,6 @@ double distanceToTruth(const mrpt::math::TPoint2D& p, const mrpt::math::TPoint2D
 	return std::max(0.0, std::hypot(p.x - t.x, p.y - t.y) - truthRadius);
 }
 
-std::vector<std::string> splitCsv(const std::string& line)
-{
-	std::vector<std::string> out;
-	std::stringstream ss(line);
-	for (std::string field; std::getline(ss, field, ',');) out.push_back(field);
-	return out;
-}
 }  // namespace
 
 TPointLandmarkScore scorePointLandmarks(const std::vector<mrpt::math::TPoint2D>& found,
@@ -60,7 +54,7 @@ std::vector<mrpt::math::TPoint2D> readPointsCsv(const std::string& path)
 	if (!f) throw std::runtime_error(path + ": cannot open");
 	std::string line;
 	if (!std::getline(f, line)) throw std::runtime_error(path + ": empty file (no header)");
-	const auto header = splitCsv(line);
+	const auto header = io::splitCsvLine(line);
 	const auto column = [&](const std::string& name) {
 		const auto it = std::find(header.begin(), header.end(), name);
 		if (it == header.end()) throw std::runtime_error(path + ":1: no column '" + name + "'");
@@ -71,7 +65,7 @@ std::vector<mrpt::math::TPoint2D> readPointsCsv(const std::string& path)
 	for (size_t lineNo = 2; std::getline(f, line); ++lineNo)
 	{
 		if (line.empty()) continue;
-		const auto fields = splitCsv(line);
+		const auto fields = io::splitCsvLine(line);
 		const std::string where = path + ":" + std::to_string(lineNo);
 		if (fields.size() <= std::max(ix, iy)) throw std::runtime_error(where + ": too few fields");
 		const auto x = common::tryParseDouble(common::trim(fields[ix])), y = common::tryParseDouble(common::trim(fields[iy]));

@@ -29,6 +29,7 @@
  * dynamic objects are not inserted (insert()'s skip mask). */
 #pragma once
 
+#include <hslam/common/cell_key.h>
 #include <mrpt/math/TPoint2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
@@ -76,7 +77,7 @@ class CStaticEvidenceGrid
 		int scans = 0;  //!< distinct scans in the current run
 		double established_s = std::numeric_limits<double>::infinity();  //!< when it became established
 	};
-	int64_t keyOf(int ix, int iy) const { return static_cast<int64_t>(static_cast<uint64_t>(static_cast<int64_t>(ix)) << 32) ^ static_cast<uint32_t>(iy); }
+	int64_t keyOf(int ix, int iy) const { return common::cellKey(ix, iy); }
 	int index(double v) const;
 	void hit(int64_t key, double t_s);
 	void prune(double t_s);

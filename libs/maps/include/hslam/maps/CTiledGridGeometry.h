@@ -22,6 +22,7 @@
  * cell-for-cell identical to ours. */
 #pragma once
 
+#include <hslam/common/cell_key.h>
 #include <mrpt/math/TPoint2D.h>
 
 #include <algorithm>
@@ -41,10 +42,7 @@ struct TTileIndex
 
 struct TTileIndexHash
 {
-	size_t operator()(const TTileIndex& t) const
-	{
-		return std::hash<long long>()(static_cast<long long>(static_cast<unsigned long long>(static_cast<long long>(t.ix)) << 32) ^ static_cast<unsigned>(t.iy));
-	}
+	size_t operator()(const TTileIndex& t) const { return common::cellKeyHash(t.ix, t.iy); }
 };
 
 /** Cell index in the whole (unbounded) grid; cell (0,0) spans [0, res) x [0, res). */
@@ -52,6 +50,11 @@ struct TGlobalCell
 {
 	int gx = 0, gy = 0;
 	bool operator==(const TGlobalCell& o) const { return gx == o.gx && gy == o.gy; }
+};
+
+struct TGlobalCellHash
+{
+	size_t operator()(const TGlobalCell& c) const { return common::cellKeyHash(c.gx, c.gy); }
 };
 
 /** Cell index inside one tile, 0 .. N-1 on each axis. */

@@ -1,4 +1,5 @@
-/* hslam: the files the batch processor leaves in its output folder:
+/* hslam: the files a mapping run leaves in its output folder (written by the
+ * batch job, libs/batch, and by hslam-grabber --map-out):
  *   map.png             merged map, estimated trajectory (red) and odometry (orange)
  *   tiles/tile_X_Y.png  one image per tile (tile indices relative to the home tile)
  *   map.gridmap.gz      merged mrpt::maps::COccupancyGridMap2D (MRPT tools load it)

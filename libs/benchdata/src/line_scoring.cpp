@@ -1,12 +1,12 @@
 /* hslam: scoring extracted lines against ground truth (see line_scoring.h). */
+#include <hslam/benchdata/line_scoring.h>
 #include <hslam/features/line_fit.h>
-#include <hslam/features/line_scoring.h>
 
 #include <algorithm>
 #include <cmath>
 #include <tuple>
 
-namespace hslam::features
+namespace hslam::benchdata
 {
 namespace
 {
@@ -19,7 +19,7 @@ double TLineScore::f1() const
 	return p + r > 0 ? 2 * p * r / (p + r) : 0.0;
 }
 
-bool segmentMatches(const TLineSegment& s, const TVisibleWall& truth, const TLineMatchTolerance& tol, double& overlap)
+bool segmentMatches(const features::TLineSegment& s, const TVisibleWall& truth, const TLineMatchTolerance& tol, double& overlap)
 {
 	overlap = 0;
 	const double L = truth.length_m();
@@ -27,7 +27,7 @@ bool segmentMatches(const TLineSegment& s, const TVisibleWall& truth, const TLin
 	const double ux = (truth.p1.x - truth.p0.x) / L, uy = (truth.p1.y - truth.p0.y) / L;
 	// direction difference of undirected lines, via their normals
 	const double truthNormal = std::atan2(uy, ux) + M_PI / 2;
-	if (lineAngleDifference_rad(s.alpha_rad, truthNormal) > tol.max_angle_rad) return false;
+	if (features::lineAngleDifference_rad(s.alpha_rad, truthNormal) > tol.max_angle_rad) return false;
 	auto offLine = [&](const mrpt::math::TPoint2D& p) {
 		return std::abs((p.x - truth.p0.x) * uy - (p.y - truth.p0.y) * ux);
 	};
@@ -39,7 +39,7 @@ bool segmentMatches(const TLineSegment& s, const TVisibleWall& truth, const TLin
 	return overlap >= tol.min_overlap;
 }
 
-TLineScore scoreLines(const std::vector<TVisibleWall>& truth, const TLineSegmentList& extracted,
+TLineScore scoreLines(const std::vector<TVisibleWall>& truth, const features::TLineSegmentList& extracted,
 					  const TLineMatchTolerance& tol)
 {
 	TLineScore score;
@@ -69,4 +69,4 @@ TLineScore scoreLines(const std::vector<TVisibleWall>& truth, const TLineSegment
 	return score;
 }
 
-}  // namespace hslam::features
+}  // namespace hslam::benchdata

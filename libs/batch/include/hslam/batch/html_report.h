@@ -9,17 +9,17 @@
 #pragma once
 
 #include <hslam/slam/CMappingPipeline.h>
-#include <hslam/slam/run_summary.h>
+#include <hslam/batch/run_summary.h>
 
 #include <string>
 
-namespace hslam::slam
+namespace hslam::batch
 {
 /** Writes `dir`/report.html; only images that exist in `dir` are referenced.
  * Throws std::runtime_error naming the file on a write failure. */
-void writeHtmlReport(const TRunSummary& summary, const CMappingPipeline& pipeline, const std::string& dir);
+void writeHtmlReport(const TRunSummary& summary, const slam::CMappingPipeline& pipeline, const std::string& dir);
 
 /** Text with &, <, >, " escaped for HTML. */
 std::string htmlEscape(const std::string& text);
 
-}  // namespace hslam::slam
+}  // namespace hslam::batch

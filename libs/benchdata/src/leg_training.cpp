@@ -1,18 +1,18 @@
-#include <hslam/dynamic/leg_training.h>
+#include <hslam/benchdata/leg_training.h>
 
 #include <algorithm>
 #include <numeric>
 #include <stdexcept>
 
-namespace hslam::dynamic
+namespace hslam::benchdata
 {
 size_t TLegTrainingSet::legs() const { return static_cast<size_t>(std::count(is_leg.begin(), is_leg.end(), true)); }
 
 TLegTrainingSet legTrainingSet(const std::vector<TLegDataPart>& parts, const std::vector<size_t>& use,
-							   const CLegDetector::TOptions& detector)
+							   const dynamic::CLegDetector::TOptions& detector)
 {
 	// The detector's own segmentation (its clustering range is derived from max_range_m).
-	const TClusterOptions clustering = CLegDetector(detector, nullptr).options().clustering;
+	const dynamic::TClusterOptions clustering = dynamic::CLegDetector(detector, nullptr).options().clustering;
 	TLegTrainingSet set;
 	for (size_t i : use)
 		for (const auto& c : labelledClusters(parts.at(i), clustering, detector.max_range_m))
@@ -39,8 +39,8 @@ std::vector<int> legCrossValidationFolds(const std::vector<TLegDataPart>& parts,
 	return fold;
 }
 
-TFoldClassifiers trainFoldClassifiers(const std::vector<TLegDataPart>& parts, const CLegDetector::TOptions& detector,
-									  const CLegClassifier::TTrainOptions& training)
+TFoldClassifiers trainFoldClassifiers(const std::vector<TLegDataPart>& parts, const dynamic::CLegDetector::TOptions& detector,
+									  const dynamic::CLegClassifier::TTrainOptions& training)
 {
 	TFoldClassifiers out;
 	out.fold_of_part = legCrossValidationFolds(parts);
@@ -62,23 +62,23 @@ TFoldClassifiers trainFoldClassifiers(const std::vector<TLegDataPart>& parts, co
 			std::iota(trainParts.begin(), trainParts.end(), size_t{0});
 		}
 		const auto set = legTrainingSet(parts, trainParts, detector);
-		auto model = std::make_shared<CLegClassifier>();
+		auto model = std::make_shared<dynamic::CLegClassifier>();
 		model->train(set.features, set.is_leg, training);
 		out.models.push_back(model);
 	}
 	return out;
 }
 
-std::shared_ptr<const CLegClassifier> trainOnAll(const std::vector<TLegDataPart>& parts,
-												 const CLegDetector::TOptions& detector,
-												 const CLegClassifier::TTrainOptions& training)
+std::shared_ptr<const dynamic::CLegClassifier> trainOnAll(const std::vector<TLegDataPart>& parts,
+												 const dynamic::CLegDetector::TOptions& detector,
+												 const dynamic::CLegClassifier::TTrainOptions& training)
 {
 	std::vector<size_t> all(parts.size());
 	std::iota(all.begin(), all.end(), size_t{0});
 	const auto set = legTrainingSet(parts, all, detector);
-	auto model = std::make_shared<CLegClassifier>();
+	auto model = std::make_shared<dynamic::CLegClassifier>();
 	model->train(set.features, set.is_leg, training);
 	return model;
 }
 
-}  // namespace hslam::dynamic
+}  // namespace hslam::benchdata

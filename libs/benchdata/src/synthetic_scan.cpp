@@ -1,10 +1,10 @@
 /* hslam: exact ray-cast scans of wall segments (see synthetic_scan.h). */
-#include <hslam/features/synthetic_scan.h>
+#include <hslam/benchdata/synthetic_scan.h>
 
 #include <cmath>
 #include <random>
 
-namespace hslam::features
+namespace hslam::benchdata
 {
 namespace
 {
@@ -95,4 +95,4 @@ std::vector<TVisibleWall> visibleWalls(const TSyntheticScan& sim, size_t min_bea
 	return out;
 }
 
-}  // namespace hslam::features
+}  // namespace hslam::benchdata

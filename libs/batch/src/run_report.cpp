@@ -1,10 +1,10 @@
-#include <hslam/slam/html_report.h>
-#include <hslam/slam/run_report.h>
-#include <hslam/slam/run_summary.h>
+#include <hslam/batch/html_report.h>
+#include <hslam/batch/run_report.h>
+#include <hslam/batch/run_summary.h>
 
-namespace hslam::slam
+namespace hslam::batch
 {
-std::vector<std::string> writeRunReport(const CMappingPipeline& pipeline, const TBatchRequest& request,
+std::vector<std::string> writeRunReport(const slam::CMappingPipeline& pipeline, const TBatchRequest& request,
 										const TBatchResult& result, double wall_s)
 {
 	const auto summary = summarizeRun(pipeline, request, result, wall_s);
@@ -13,4 +13,4 @@ std::vector<std::string> writeRunReport(const CMappingPipeline& pipeline, const 
 	writeHtmlReport(summary, pipeline, request.output_dir);
 	return {json, request.output_dir + "/report.html"};
 }
-}  // namespace hslam::slam
+}  // namespace hslam::batch

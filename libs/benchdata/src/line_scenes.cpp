@@ -1,9 +1,9 @@
 /* hslam: thesis table 3 environments (see line_scenes.h). */
-#include <hslam/features/line_scenes.h>
+#include <hslam/benchdata/line_scenes.h>
 
 #include <cmath>
 
-namespace hslam::features
+namespace hslam::benchdata
 {
 namespace
 {
@@ -48,4 +48,4 @@ std::vector<TWallScene> thesisTable3Scenes(double sigma_m, double noisy_sigma_m)
 	return scenes;
 }
 
-}  // namespace hslam::features
+}  // namespace hslam::benchdata

@@ -3,15 +3,15 @@
  * (html_report.h). */
 #pragma once
 
-#include <hslam/slam/CBatchProcessor.h>
+#include <hslam/batch/CBatchProcessor.h>
 
 #include <string>
 #include <vector>
 
-namespace hslam::slam
+namespace hslam::batch
 {
 /** Writes summary.json and report.html into request.output_dir; returns the
  * two paths. `wall_s` is the run's duration so far. */
-std::vector<std::string> writeRunReport(const CMappingPipeline& pipeline, const TBatchRequest& request,
+std::vector<std::string> writeRunReport(const slam::CMappingPipeline& pipeline, const TBatchRequest& request,
 										const TBatchResult& result, double wall_s);
-}  // namespace hslam::slam
+}  // namespace hslam::batch

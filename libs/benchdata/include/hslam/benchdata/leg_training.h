@@ -13,24 +13,24 @@
 
 #include <hslam/dynamic/CLegClassifier.h>
 #include <hslam/dynamic/CLegDetector.h>
-#include <hslam/dynamic/leg_dataset.h>
+#include <hslam/benchdata/leg_dataset.h>
 
 #include <memory>
 #include <string>
 #include <vector>
 
-namespace hslam::dynamic
+namespace hslam::benchdata
 {
 /** Labelled leg / non-leg samples of the parts whose index is in `use`
  * (unlabelled clusters are skipped), segmented as `detector` segments. */
 struct TLegTrainingSet
 {
-	std::vector<TLegFeatures> features;
+	std::vector<dynamic::TLegFeatures> features;
 	std::vector<bool> is_leg;
 	size_t legs() const;
 };
 TLegTrainingSet legTrainingSet(const std::vector<TLegDataPart>& parts, const std::vector<size_t>& use,
-							   const CLegDetector::TOptions& detector);
+							   const dynamic::CLegDetector::TOptions& detector);
 
 /** Fold of each part (see file comment); throws std::runtime_error if the
  * parts lack people or non-people. */
@@ -39,16 +39,16 @@ std::vector<int> legCrossValidationFolds(const std::vector<TLegDataPart>& parts,
 /** One forest per fold, each trained on the other folds' parts. */
 struct TFoldClassifiers
 {
-	std::vector<std::shared_ptr<const CLegClassifier>> models;
+	std::vector<std::shared_ptr<const dynamic::CLegClassifier>> models;
 	std::vector<int> fold_of_part;
 	std::string description;  //!< "fold 1: positive_1_extracted + negative_2/left_laser; ..."
 };
-TFoldClassifiers trainFoldClassifiers(const std::vector<TLegDataPart>& parts, const CLegDetector::TOptions& detector,
-									  const CLegClassifier::TTrainOptions& training);
+TFoldClassifiers trainFoldClassifiers(const std::vector<TLegDataPart>& parts, const dynamic::CLegDetector::TOptions& detector,
+									  const dynamic::CLegClassifier::TTrainOptions& training);
 
 /** A forest trained on every labelled part. */
-std::shared_ptr<const CLegClassifier> trainOnAll(const std::vector<TLegDataPart>& parts,
-												 const CLegDetector::TOptions& detector,
-												 const CLegClassifier::TTrainOptions& training);
+std::shared_ptr<const dynamic::CLegClassifier> trainOnAll(const std::vector<TLegDataPart>& parts,
+												 const dynamic::CLegDetector::TOptions& detector,
+												 const dynamic::CLegClassifier::TTrainOptions& training);
 
-}  // namespace hslam::dynamic
+}  // namespace hslam::benchdata

@@ -1,6 +1,6 @@
 #include <hslam/common/output_folder.h>
 #include <hslam/common/version.h>
-#include <hslam/slam/html_report.h>
+#include <hslam/batch/html_report.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -9,7 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace hslam::slam
+namespace hslam::batch
 {
 namespace
 {
@@ -112,7 +112,7 @@ void writeEvaluation(std::ostream& h, const TRunSummary& s)
 }
 
 /** One line per track: kind, id, first/last time, scans seen, last position. */
-void writeTracks(std::ostream& h, const CMappingPipeline& pipeline)
+void writeTracks(std::ostream& h, const slam::CMappingPipeline& pipeline)
 {
 	if (!pipeline.dynamicFilter()) return;
 	struct TSpan
@@ -144,7 +144,7 @@ void writeTracks(std::ostream& h, const CMappingPipeline& pipeline)
 	h << "</table>\n";
 }
 
-void writeSonarCorners(std::ostream& h, const CMappingPipeline& pipeline)
+void writeSonarCorners(std::ostream& h, const slam::CMappingPipeline& pipeline)
 {
 	const auto& corners = pipeline.sonarStage().corners();
 	if (!pipeline.sonarStage().tbfOptions().enabled) return;
@@ -193,7 +193,7 @@ std::string htmlEscape(const std::string& text)
 	return out;
 }
 
-void writeHtmlReport(const TRunSummary& summary, const CMappingPipeline& pipeline, const std::string& dir)
+void writeHtmlReport(const TRunSummary& summary, const slam::CMappingPipeline& pipeline, const std::string& dir)
 {
 	std::ostringstream h;
 	h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>hslam-process: "
@@ -223,4 +223,4 @@ void writeHtmlReport(const TRunSummary& summary, const CMappingPipeline& pipelin
 	common::writeTextFileAtomically(path, h.str());
 }
 
-}  // namespace hslam::slam
+}  // namespace hslam::batch

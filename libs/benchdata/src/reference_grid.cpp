@@ -1,46 +1,14 @@
-#include <hslam/maps/grid_comparison.h>
+/* hslam: a reference map resampled onto our cells (see reference_grid.h). */
+#include <hslam/benchdata/reference_grid.h>
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-namespace hslam::maps
+namespace hslam::benchdata
 {
-ECellClass classifyOccupancy(double p, double margin)
-{
-	if (p > 0.5 + margin) return ECellClass::occupied;
-	if (p < 0.5 - margin) return ECellClass::free;
-	return ECellClass::unknown;
-}
-
-TCellAgreement compareWithMrptGrid(const CTiledOccupancyGrid& ours, const mrpt::maps::COccupancyGridMap2D& mrptGrid,
-								   double margin)
-{
-	const double res = ours.geometry().resolution_m();
-	if (std::abs(mrptGrid.getResolution() - res) > 1e-6)
-		throw std::invalid_argument("compareWithMrptGrid: grids have different resolutions");
-	TCellAgreement out;
-	for (unsigned cy = 0; cy < mrptGrid.getSizeY(); ++cy)
-		for (unsigned cx = 0; cx < mrptGrid.getSizeX(); ++cx)
-		{
-			const double x = mrptGrid.idx2x(cx), y = mrptGrid.idx2y(cy);  // cell centre
-			const TGlobalCell g = ours.geometry().cellOf(x, y);
-			const ECellClass a = ours.isObserved(g) ? classifyOccupancy(ours.occupancyProbability(g), margin)
-													: ECellClass::unknown;
-			const ECellClass b = classifyOccupancy(1.0 - mrptGrid.getCell(cx, cy), margin);
-			if (a == ECellClass::unknown && b == ECellClass::unknown) continue;
-			++out.compared;
-			if (a != ECellClass::unknown) ++out.ours_known;
-			if (a == b) ++out.agreed;
-			if (a == ECellClass::occupied && b == ECellClass::occupied) ++out.occupied_both;
-			if (a == ECellClass::occupied && b != ECellClass::occupied) ++out.occupied_only_ours;
-			if (a != ECellClass::occupied && b == ECellClass::occupied) ++out.occupied_only_mrpt;
-		}
-	return out;
-}
-
 mrpt::maps::COccupancyGridMap2D resampleOntoOurCells(const mrpt::maps::COccupancyGridMap2D& reference,
-													 const CTiledGridGeometry& ours, const TCellBounds& cells,
+													 const maps::CTiledGridGeometry& ours, const maps::TCellBounds& cells,
 													 const mrpt::poses::CPose2D& oursInReference, double margin)
 {
 	const double res = ours.resolution_m();
@@ -78,4 +46,4 @@ mrpt::maps::COccupancyGridMap2D resampleOntoOurCells(const mrpt::maps::COccupanc
 	return out;
 }
 
-}  // namespace hslam::maps
+}  // namespace hslam::benchdata

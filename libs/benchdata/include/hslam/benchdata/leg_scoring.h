@@ -16,21 +16,21 @@
 #include <memory>
 #include <vector>
 
-namespace hslam::dynamic
+namespace hslam::benchdata
 {
 /** Legs reported per scan (robot frame). */
-using TLegsPerScan = std::vector<std::vector<TLegSegment>>;
+using TLegsPerScan = std::vector<std::vector<dynamic::TLegSegment>>;
 
 struct TLegOutputLevels
 {
 	TLegsPerScan detected, dynamic, late;
-	double seconds = 0;  //!< time spent in CDynamicObjectFilter::process
+	double seconds = 0;  //!< time spent in dynamic::CDynamicObjectFilter::process
 };
 
 /** Runs a fresh filter (with `classifier`, null: the options' detector)
  * over `scans` taken at robot poses `poses` (one per scan). */
-TLegOutputLevels runLegFilter(const CDynamicObjectFilter::TOptions& options,
-							  const std::shared_ptr<const CLegClassifier>& classifier,
+TLegOutputLevels runLegFilter(const dynamic::CDynamicObjectFilter::TOptions& options,
+							  const std::shared_ptr<const dynamic::CLegClassifier>& classifier,
 							  const std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>& scans,
 							  const std::vector<mrpt::poses::CPose2D>& poses);
 
@@ -48,4 +48,4 @@ TLegScore scoreAgainstAnnotations(const TLegsPerScan& reported,
 								  const std::vector<std::vector<mrpt::math::TPoint2D>>& annotations,
 								  double matchRadius_m, double maxRange_m);
 
-}  // namespace hslam::dynamic
+}  // namespace hslam::benchdata

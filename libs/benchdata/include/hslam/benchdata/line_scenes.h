@@ -12,12 +12,12 @@
  * description, not their exact coordinates. */
 #pragma once
 
-#include <hslam/features/synthetic_scan.h>
+#include <hslam/benchdata/synthetic_scan.h>
 
 #include <string>
 #include <vector>
 
-namespace hslam::features
+namespace hslam::benchdata
 {
 struct TWallScene
 {
@@ -29,4 +29,4 @@ struct TWallScene
  * "corner2" has `noisy_sigma_m`. */
 std::vector<TWallScene> thesisTable3Scenes(double sigma_m, double noisy_sigma_m);
 
-}  // namespace hslam::features
+}  // namespace hslam::benchdata

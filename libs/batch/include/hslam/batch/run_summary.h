@@ -13,13 +13,13 @@
  * object hslam-evaluate --json writes). */
 #pragma once
 
-#include <hslam/slam/CBatchProcessor.h>
+#include <hslam/batch/CBatchProcessor.h>
 
 #include <optional>
 #include <string>
 #include <vector>
 
-namespace hslam::slam
+namespace hslam::batch
 {
 struct TRunSummary
 {
@@ -35,7 +35,7 @@ struct TRunSummary
 };
 
 /** Collects the figures of a finished run; `wall_s` is the run's duration. */
-TRunSummary summarizeRun(const CMappingPipeline& pipeline, const TBatchRequest& request, const TBatchResult& result,
+TRunSummary summarizeRun(const slam::CMappingPipeline& pipeline, const TBatchRequest& request, const TBatchResult& result,
 						 double wall_s);
 
 /** The summary.json text. */
@@ -44,4 +44,4 @@ std::string runSummaryToJson(const TRunSummary& summary);
 /** Writes runSummaryToJson() to `path`; throws std::runtime_error naming it. */
 void writeRunSummaryJson(const TRunSummary& summary, const std::string& path);
 
-}  // namespace hslam::slam
+}  // namespace hslam::batch

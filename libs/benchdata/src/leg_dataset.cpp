@@ -1,4 +1,4 @@
-#include <hslam/dynamic/leg_dataset.h>
+#include <hslam/benchdata/leg_dataset.h>
 #include <hslam/io/csv_line.h>
 #include <hslam/io/rawlog_scans.h>
 
@@ -10,7 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace hslam::dynamic
+namespace hslam::benchdata
 {
 namespace fs = std::filesystem;
 
@@ -110,14 +110,14 @@ bool inAnnotatedArc(const mrpt::math::TPoint2D& p)
 	return bearing_deg > -15 && bearing_deg < 15 && std::hypot(p.x, p.y) < 5.0;
 }
 
-std::vector<TLabelledCluster> labelledClusters(const TLegDataPart& part, const TClusterOptions& clustering,
+std::vector<TLabelledCluster> labelledClusters(const TLegDataPart& part, const dynamic::TClusterOptions& clustering,
 											   double maxCentroidRange_m)
 {
 	constexpr double kAnnotationMatch_m = 0.01;
 	std::vector<TLabelledCluster> out;
 	for (size_t i = 0; i < part.scans.size(); ++i)
 	{
-		const auto clusters = clusterScan(*part.scans[i], clustering);
+		const auto clusters = dynamic::clusterScan(*part.scans[i], clustering);
 		for (size_t k = 0; k < clusters.size(); ++k)
 		{
 			const auto& c = clusters[k];
@@ -125,7 +125,7 @@ std::vector<TLabelledCluster> labelledClusters(const TLegDataPart& part, const T
 			l.scan = i;
 			l.centroid = c.centroid;
 			if (std::hypot(l.centroid.x, l.centroid.y) >= maxCentroidRange_m) continue;
-			l.features = legFeatures(clusters, k, *part.scans[i]);
+			l.features = dynamic::legFeatures(clusters, k, *part.scans[i]);
 			if (!part.has_people)
 				l.label = TLabelledCluster::ELabel::non_leg;
 			else if (inAnnotatedArc(l.centroid))
@@ -141,4 +141,4 @@ std::vector<TLabelledCluster> labelledClusters(const TLegDataPart& part, const T
 	return out;
 }
 
-}  // namespace hslam::dynamic
+}  // namespace hslam::benchdata

@@ -4,11 +4,11 @@
 #include <hslam/eval/evaluate_trajectory.h>
 #include <hslam/eval/evaluation_json.h>
 #include <hslam/eval/evaluation_table.h>
-#include <hslam/slam/CBatchProcessor.h>
+#include <hslam/batch/CBatchProcessor.h>
 #include <hslam/slam/loop_closure_outputs.h>
 #include <hslam/slam/mapping_config.h>
 #include <hslam/slam/pose_plots.h>
-#include <hslam/slam/run_report.h>
+#include <hslam/batch/run_report.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
 #include <array>
@@ -19,7 +19,7 @@
 #include <memory>
 #include <fstream>
 
-namespace hslam::slam
+namespace hslam::batch
 {
 CBatchProcessor::CBatchProcessor(TBatchRequest request, std::ostream& out, std::ostream& err)
 	: m_request(std::move(request)), m_out(out), m_err(err)
@@ -29,9 +29,9 @@ CBatchProcessor::CBatchProcessor(TBatchRequest request, std::ostream& out, std::
 TBatchResult CBatchProcessor::run()
 {
 	const auto started = std::chrono::steady_clock::now();
-	const auto config = TMappingConfig::fromConfig(m_request.config_file, m_request.overrides);
-	CMappingPipeline pipeline(config.ini);
-	const TOutputOptions& outputOptions = config.output;
+	const auto config = slam::TMappingConfig::fromConfig(m_request.config_file, m_request.overrides);
+	slam::CMappingPipeline pipeline(config.ini);
+	const slam::TOutputOptions& outputOptions = config.output;
 	if (outputOptions.write_sensor_maps) pipeline.keepSensorMaps();
 	if (outputOptions.dynamic_debug_images)
 		pipeline.keepDynamicDebugFrames(static_cast<size_t>(outputOptions.dynamic_debug_max_images));
@@ -42,7 +42,7 @@ TBatchResult CBatchProcessor::run()
 	readRawlog(pipeline, result);
 	pipeline.finish();  // map from the optimised graph, if any
 	result.counters = pipeline.counters();
-	result.files_written = writeMappingOutputs(pipeline, outputOptions, m_request.output_dir);
+	result.files_written = slam::writeMappingOutputs(pipeline, outputOptions, m_request.output_dir);
 	writeEffectiveConfig(pipeline, outputOptions);
 	printSummary(pipeline, result);
 	if (!m_request.ground_truth_tum.empty()) evaluate(pipeline, result);
@@ -53,7 +53,7 @@ TBatchResult CBatchProcessor::run()
 	return result;
 }
 
-void CBatchProcessor::readRawlog(CMappingPipeline& pipeline, TBatchResult& result)
+void CBatchProcessor::readRawlog(slam::CMappingPipeline& pipeline, TBatchResult& result)
 {
 	const size_t total = m_request.show_progress ? io::CRawlogReader::countEntries(m_request.input_rawlog) : 0;
 	io::CRawlogReader reader(m_request.input_rawlog);
@@ -81,14 +81,14 @@ void CBatchProcessor::readRawlog(CMappingPipeline& pipeline, TBatchResult& resul
 	if (m_request.show_progress) progress.finish();
 }
 
-void CBatchProcessor::addDebugFrameWriter(CMappingPipeline& pipeline, int every)
+void CBatchProcessor::addDebugFrameWriter(slam::CMappingPipeline& pipeline, int every)
 {
 	if (every <= 0) return;
 	const std::string dir = m_request.output_dir + "/frames";
 	std::filesystem::create_directories(dir);
 	auto counter = std::make_shared<size_t>(0);
 	pipeline.addEstimateObserver([dir, every, counter](const mrpt::obs::CObservation2DRangeScan& scan,
-													   const TPoseEstimate& estimate) {
+													   const slam::TPoseEstimate& estimate) {
 		const size_t index = (*counter)++;
 		if (index % static_cast<size_t>(every) != 0) return;
 		char name[32];
@@ -98,7 +98,7 @@ void CBatchProcessor::addDebugFrameWriter(CMappingPipeline& pipeline, int every)
 	});
 }
 
-void CBatchProcessor::writeEffectiveConfig(const CMappingPipeline& pipeline, const TOutputOptions& outputOptions)
+void CBatchProcessor::writeEffectiveConfig(const slam::CMappingPipeline& pipeline, const slam::TOutputOptions& outputOptions)
 {
 	mrpt::config::CConfigFileMemory effective;
 	pipeline.saveOptions(effective);
@@ -110,7 +110,7 @@ void CBatchProcessor::writeEffectiveConfig(const CMappingPipeline& pipeline, con
 				  effective.getContent());
 }
 
-void CBatchProcessor::printSummary(const CMappingPipeline& pipeline, const TBatchResult& result)
+void CBatchProcessor::printSummary(const slam::CMappingPipeline& pipeline, const TBatchResult& result)
 {
 	const auto& c = result.counters;
 	m_out << "Input:            " << m_request.input_rawlog << "\n"
@@ -145,7 +145,7 @@ void CBatchProcessor::printSummary(const CMappingPipeline& pipeline, const TBatc
 			  << "       results for the " << c.entries << " entries read before the fault were written.\n";
 }
 
-void CBatchProcessor::printMatchSummary(const CMappingPipeline& pipeline)
+void CBatchProcessor::printMatchSummary(const slam::CMappingPipeline& pipeline)
 {
 	std::map<std::string, std::array<size_t, 4>> byMethod;  // good, weak, failed, rejected
 	size_t matched = 0;
@@ -164,7 +164,7 @@ void CBatchProcessor::printMatchSummary(const CMappingPipeline& pipeline)
 			  << " rejected by the UKF gate\n";
 }
 
-void CBatchProcessor::evaluate(const CMappingPipeline& pipeline, TBatchResult& result)
+void CBatchProcessor::evaluate(const slam::CMappingPipeline& pipeline, TBatchResult& result)
 {
 	const auto reference = common::readTumFile(m_request.ground_truth_tum);
 	eval::TEvaluationOptions options;
@@ -186,4 +186,4 @@ void CBatchProcessor::evaluate(const CMappingPipeline& pipeline, TBatchResult& r
 	result.evaluation = errors;
 }
 
-}  // namespace hslam::slam
+}  // namespace hslam::batch

@@ -16,7 +16,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace hslam::features
+namespace hslam::benchdata
 {
 struct TWall
 {
@@ -55,4 +55,4 @@ struct TVisibleWall
 /** Visible wall parts seen by at least min_beams beams and at least min_length_m long. */
 std::vector<TVisibleWall> visibleWalls(const TSyntheticScan& sim, size_t min_beams, double min_length_m);
 
-}  // namespace hslam::features
+}  // namespace hslam::benchdata

@@ -2,21 +2,21 @@
 #include <hslam/common/json_text.h>
 #include <hslam/common/version.h>
 #include <hslam/eval/evaluation_json.h>
-#include <hslam/slam/run_summary.h>
+#include <hslam/batch/run_summary.h>
 
 #include <fstream>
 #include <set>
 #include <stdexcept>
 #include <utility>
 
-namespace hslam::slam
+namespace hslam::batch
 {
 namespace
 {
 using common::jsonNumber;
 using common::jsonString;
 
-void countMatches(const CMappingPipeline& pipeline, TRunSummary& s)
+void countMatches(const slam::CMappingPipeline& pipeline, TRunSummary& s)
 {
 	for (const auto& [t, e] : pipeline.estimates())
 	{
@@ -27,7 +27,7 @@ void countMatches(const CMappingPipeline& pipeline, TRunSummary& s)
 	}
 }
 
-void countTracks(const CMappingPipeline& pipeline, TRunSummary& s)
+void countTracks(const slam::CMappingPipeline& pipeline, TRunSummary& s)
 {
 	std::set<int> legs, persons;
 	for (const auto& row : pipeline.trackRows())
@@ -57,7 +57,7 @@ void addWarnings(TRunSummary& s)
 }
 }  // namespace
 
-TRunSummary summarizeRun(const CMappingPipeline& pipeline, const TBatchRequest& request, const TBatchResult& result,
+TRunSummary summarizeRun(const slam::CMappingPipeline& pipeline, const TBatchRequest& request, const TBatchResult& result,
 						 double wall_s)
 {
 	TRunSummary s;
@@ -125,4 +125,4 @@ void writeRunSummaryJson(const TRunSummary& summary, const std::string& path)
 	common::writeTextFileAtomically(path, runSummaryToJson(summary));
 }
 
-}  // namespace hslam::slam
+}  // namespace hslam::batch

@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-namespace hslam::dynamic
+namespace hslam::benchdata
 {
 /** One recording of one sensor. */
 struct TLegDataPart
@@ -47,7 +47,7 @@ struct TLabelledCluster
 {
 	size_t scan = 0;  //!< index in the part
 	mrpt::math::TPoint2D centroid;  //!< laser frame
-	TLegFeatures features{};
+	dynamic::TLegFeatures features{};
 	enum class ELabel
 	{
 		leg,
@@ -62,7 +62,7 @@ struct TLabelledCluster
  * 0.01 m of an annotation is a leg, one elsewhere in the arc a non-leg (the
  * extraction labelled every cluster there), one outside unlabelled; in a
  * negative part all are non-legs. */
-std::vector<TLabelledCluster> labelledClusters(const TLegDataPart& part, const TClusterOptions& clustering,
+std::vector<TLabelledCluster> labelledClusters(const TLegDataPart& part, const dynamic::TClusterOptions& clustering,
 											   double maxCentroidRange_m);
 
-}  // namespace hslam::dynamic
+}  // namespace hslam::benchdata

@@ -15,12 +15,12 @@
  * order). */
 #pragma once
 
+#include <hslam/benchdata/synthetic_scan.h>
 #include <hslam/features/line_segment.h>
-#include <hslam/features/synthetic_scan.h>
 
 #include <vector>
 
-namespace hslam::features
+namespace hslam::benchdata
 {
 struct TLineMatchTolerance
 {
@@ -45,9 +45,9 @@ struct TLineScore
 };
 
 /** Does `s` match `truth` (see above); overlap fraction returned in `overlap`. */
-bool segmentMatches(const TLineSegment& s, const TVisibleWall& truth, const TLineMatchTolerance& tol, double& overlap);
+bool segmentMatches(const features::TLineSegment& s, const TVisibleWall& truth, const TLineMatchTolerance& tol, double& overlap);
 
-TLineScore scoreLines(const std::vector<TVisibleWall>& truth, const TLineSegmentList& extracted,
+TLineScore scoreLines(const std::vector<TVisibleWall>& truth, const features::TLineSegmentList& extracted,
 					  const TLineMatchTolerance& tol = {});
 
-}  // namespace hslam::features
+}  // namespace hslam::benchdata

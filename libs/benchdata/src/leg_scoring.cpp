@@ -1,5 +1,5 @@
-#include <hslam/dynamic/leg_dataset.h>
-#include <hslam/dynamic/leg_scoring.h>
+#include <hslam/benchdata/leg_dataset.h>
+#include <hslam/benchdata/leg_scoring.h>
 #include <mrpt/system/datetime.h>
 
 #include <chrono>
@@ -7,15 +7,15 @@
 #include <set>
 #include <stdexcept>
 
-namespace hslam::dynamic
+namespace hslam::benchdata
 {
-TLegOutputLevels runLegFilter(const CDynamicObjectFilter::TOptions& options,
-							  const std::shared_ptr<const CLegClassifier>& classifier,
+TLegOutputLevels runLegFilter(const dynamic::CDynamicObjectFilter::TOptions& options,
+							  const std::shared_ptr<const dynamic::CLegClassifier>& classifier,
 							  const std::vector<mrpt::obs::CObservation2DRangeScan::Ptr>& scans,
 							  const std::vector<mrpt::poses::CPose2D>& poses)
 {
 	if (poses.size() != scans.size()) throw std::invalid_argument("runLegFilter: one pose per scan");
-	CDynamicObjectFilter filter(options, classifier);
+	dynamic::CDynamicObjectFilter filter(options, classifier);
 	TLegOutputLevels out;
 	auto &all = out.detected, &dynamicOnly = out.dynamic, &lateDynamic = out.late;
 	all.assign(scans.size(), {});
@@ -35,9 +35,9 @@ TLegOutputLevels runLegFilter(const CDynamicObjectFilter::TOptions& options,
 			ids[i].push_back({leg.leg_track, leg.person_track});
 		}
 		for (const auto& t : frame.leg_tracks)
-			if (t.state == ETrackState::dynamic) dynamicLegIds.insert(t.id);
+			if (t.state == dynamic::ETrackState::dynamic) dynamicLegIds.insert(t.id);
 		for (const auto& t : frame.person_tracks)
-			if (t.state == ETrackState::dynamic) dynamicPersonIds.insert(t.id);
+			if (t.state == dynamic::ETrackState::dynamic) dynamicPersonIds.insert(t.id);
 	}
 	for (size_t i = 0; i < scans.size(); ++i)
 		for (size_t k = 0; k < all[i].size(); ++k)
@@ -79,4 +79,4 @@ TLegScore scoreAgainstAnnotations(const TLegsPerScan& reported,
 	return s;
 }
 
-}  // namespace hslam::dynamic
+}  // namespace hslam::benchdata

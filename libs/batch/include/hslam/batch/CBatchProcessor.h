@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace hslam::slam
+namespace hslam::batch
 {
 struct TBatchRequest
 {
@@ -29,7 +29,7 @@ struct TBatchRequest
 
 struct TBatchResult
 {
-	TPipelineCounters counters;
+	slam::TPipelineCounters counters;
 	std::string input_error;  //!< non-empty if reading stopped at a fault
 	std::vector<std::string> files_written;
 	bool evaluated = false;
@@ -43,22 +43,22 @@ class CBatchProcessor
 	CBatchProcessor(TBatchRequest request, std::ostream& out, std::ostream& err);
 
 	/** Runs the whole job. The configuration is read by
-	 * TMappingConfig::fromConfig (mapping_config.h); its errors throw
+	 * slam::TMappingConfig::fromConfig (mapping_config.h); its errors throw
 	 * (common::config_error);
 	 * input faults are reported in the result after writing the outputs. */
 	TBatchResult run();
 
    private:
-	void readRawlog(CMappingPipeline& pipeline, TBatchResult& result);
-	void evaluate(const CMappingPipeline& pipeline, TBatchResult& result);
-	void writeEffectiveConfig(const CMappingPipeline& pipeline, const TOutputOptions& outputOptions);
-	void printSummary(const CMappingPipeline& pipeline, const TBatchResult& result);
-	void printMatchSummary(const CMappingPipeline& pipeline);
-	void addDebugFrameWriter(CMappingPipeline& pipeline, int every);
+	void readRawlog(slam::CMappingPipeline& pipeline, TBatchResult& result);
+	void evaluate(const slam::CMappingPipeline& pipeline, TBatchResult& result);
+	void writeEffectiveConfig(const slam::CMappingPipeline& pipeline, const slam::TOutputOptions& outputOptions);
+	void printSummary(const slam::CMappingPipeline& pipeline, const TBatchResult& result);
+	void printMatchSummary(const slam::CMappingPipeline& pipeline);
+	void addDebugFrameWriter(slam::CMappingPipeline& pipeline, int every);
 
 	TBatchRequest m_request;
 	std::ostream& m_out;
 	std::ostream& m_err;
 };
 
-}  // namespace hslam::slam
+}  // namespace hslam::batch
