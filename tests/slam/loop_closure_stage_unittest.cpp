@@ -77,27 +77,55 @@ TEST(LoopClosureStage, RecoversADriftedLoop)
 	EXPECT_LT(corrected, 0.15);  // measured 0.074
 }
 
-TEST(LoopClosureStage, KeepsAGoodFrontEndAndItsClosuresAreTrue)
+/** Accepted closures of `pipeline` (run on sample `name`), each checked
+ * against the simulator's truth to maxErr_m / maxErr_deg. */
+size_t checkAcceptedClosures(const std::string& name, const slam::CMappingPipeline& pipeline, double maxErr_m,
+							 double maxErr_deg)
 {
-	auto pipeline = runStage("lab", "lines+icp");
-	const double online = ate("lab", pipeline->trajectory());
-	const double corrected = ate("lab", pipeline->finalTrajectory());
-	std::cout << "lab, default front-end: ATE " << online << " m -> " << corrected << " m\n";
-	EXPECT_LT(corrected, online + 0.005);  // measured 0.0172 -> 0.0202
-	const auto truth = common::readTumFile(sample("lab") + "/ground_truth.tum");
-	const auto& scans = pipeline->trajectory();
+	const auto truth = common::readTumFile(sample(name) + "/ground_truth.tum");
+	const auto& scans = pipeline.trajectory();
 	size_t accepted = 0;
-	for (const auto& c : pipeline->loopClosureStage()->backend().closures())
+	for (const auto& c : pipeline.loopClosureStage()->backend().closures())
 	{
 		if (!c.accepted) continue;
 		++accepted;  // keyframe ids are scan indices
 		const auto trueRel = truthAt(truth, scans[static_cast<size_t>(c.query_keyframe_id)].t_s) -
 							 truthAt(truth, scans[static_cast<size_t>(c.anchor_keyframe_id)].t_s);
 		const auto err = trueRel - mrpt::poses::CPose2D(c.relative);
-		EXPECT_LT(err.norm(), 0.06) << "closure " << c.query_keyframe_id << " -> " << c.anchor_keyframe_id;
-		EXPECT_LT(std::abs(mrpt::RAD2DEG(err.phi())), 2.0);
+		EXPECT_LT(err.norm(), maxErr_m) << name << ": closure " << c.query_keyframe_id << " -> " << c.anchor_keyframe_id;
+		EXPECT_LT(std::abs(mrpt::RAD2DEG(err.phi())), maxErr_deg) << name;
 	}
-	EXPECT_GT(accepted, 40u);  // measured 79 of 165 tested
+	return accepted;
+}
+
+TEST(LoopClosureStage, KeepsAGoodFrontEndAndItsClosuresAreTrue)
+{
+	auto pipeline = runStage("lab", "lines+icp");
+	const double online = ate("lab", pipeline->trajectory());
+	const double corrected = ate("lab", pipeline->finalTrajectory());
+	std::cout << "lab, default front-end: ATE " << online << " m -> " << corrected << " m\n";
+	EXPECT_LT(corrected, online + 0.005);  // measured 0.014 -> 0.010
+	EXPECT_GT(checkAcceptedClosures("lab", *pipeline, 0.06, 2.0), 40u);  // measured 90
+}
+
+/** Places that look alike from one scan: the ring corridor's outer corner and
+ * the inner block's corner (floor, odometry-gap), a straight corridor with one
+ * door niche (corridor). Before the free-side check and the confirmation,
+ * closures 1.1-3.5 m wrong were accepted and the default run's ATE rose from
+ * 0.123 to 0.902 m (floor), 0.115 to 0.712 m (odometry-gap) and 0.028 to
+ * 0.442 m (corridor). */
+TEST(LoopClosureStage, AliasedPlacesAreNotClosed)
+{
+	for (const char* name : {"floor", "odometry-gap", "corridor"})
+	{
+		auto pipeline = runStage(name, "lines+icp");
+		const double online = ate(name, pipeline->trajectory());
+		const double corrected = ate(name, pipeline->finalTrajectory());
+		const size_t accepted = checkAcceptedClosures(name, *pipeline, 0.2, 2.0);
+		std::cout << name << ": ATE " << online << " m -> " << corrected << " m, " << accepted
+				  << " closures accepted\n";
+		EXPECT_LT(corrected, online + 0.015) << name;  // measured 0.123 -> 0.123, 0.115 -> 0.115, 0.028 -> 0.038
+	}
 }
 
 TEST(LoopClosureStage, RerenderedMapAgreesWithTheTruthAtLeastAsWellAsTheOnlineMap)

@@ -72,15 +72,21 @@ TKeyframeResult CGraphBackend::addKeyframe(const TKeyframe& kf)
 	TKeyframeResult result;
 	result.node = addNodeAndSequentialEdge(kf);
 	m_detector.addKeyframe(result.node, kf.points, m_graph);
+	std::vector<size_t> released;  //!< closures of earlier keyframes confirmed now
 	if (m_options.detect_loops)
 	{
 		const auto td = std::chrono::steady_clock::now();
 		result.closures = m_detector.detect(result.node, m_graph, m_chainCov);
 		m_timing.detect_ms += msSince(td);
 		m_timing.candidates_tested += result.closures.size();
+		released = confirmClosures(result.closures);
+		const size_t firstNew = m_closures.size();
 		addClosures(result.closures);
+		for (const size_t k : released) addLoopEdge(m_closures[k]);
+		rememberVerified(result.node, firstNew);
 	}
 	const bool anyAccepted =
+		!released.empty() ||
 		std::any_of(result.closures.begin(), result.closures.end(), [](const TLoopClosure& c) { return c.accepted; });
 	if (anyAccepted)
 	{
@@ -105,22 +111,26 @@ void CGraphBackend::addClosures(std::vector<TLoopClosure>& tested)
 {
 	for (auto& c : tested)
 	{
-		if (c.accepted)
-		{
-			TGraphEdge e;
-			e.from = c.anchor_node, e.to = c.query_node, e.relative = c.relative, e.kind = EEdgeKind::loop;
-			e.information = c.covariance.inverse();
-			c.edge = static_cast<long>(m_graph.addEdge(e));
-			++m_timing.closures_accepted;
-			// the closure may be a tighter path to the anchor than the chain
-			Eigen::Matrix3d Ja, Jd;
-			compositionJacobians(c.anchor_pose, c.relative, Ja, Jd);
-			const Eigen::Matrix3d viaClosure =
-				Ja * m_chainCov[c.anchor_node] * Ja.transpose() + Jd * c.covariance * Jd.transpose();
-			if (viaClosure.trace() < m_chainCov[c.query_node].trace()) m_chainCov[c.query_node] = viaClosure;
-		}
+		if (c.accepted) addLoopEdge(c);
 		m_closures.push_back(c);
 	}
+}
+
+void CGraphBackend::addLoopEdge(TLoopClosure& c)
+{
+	c.accepted = true;
+	c.reason = "accepted";
+	TGraphEdge e;
+	e.from = c.anchor_node, e.to = c.query_node, e.relative = c.relative, e.kind = EEdgeKind::loop;
+	e.information = c.covariance.inverse();
+	c.edge = static_cast<long>(m_graph.addEdge(e));
+	++m_timing.closures_accepted;
+	// the closure may be a tighter path to the anchor than the chain
+	Eigen::Matrix3d Ja, Jd;
+	compositionJacobians(c.anchor_pose, c.relative, Ja, Jd);
+	const Eigen::Matrix3d viaClosure =
+		Ja * m_chainCov[c.anchor_node] * Ja.transpose() + Jd * c.covariance * Jd.transpose();
+	if (viaClosure.trace() < m_chainCov[c.query_node].trace()) m_chainCov[c.query_node] = viaClosure;
 }
 
 void CGraphBackend::markDroppedClosures(const TOptimizationReport& report)

@@ -1,3 +1,4 @@
+#include <hslam/common/cell_key.h>
 #include <hslam/graph/CLoopClosureDetector.h>
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/poses/CPose2D.h>
@@ -13,24 +14,39 @@ namespace hslam::graph
 {
 namespace
 {
-/** Points of several keyframes in the anchor frame, one per cell of `cell_m`. */
-TPointCloud2D submapPoints(const std::vector<std::pair<size_t, TPointCloud2D>>& keyframes, const CPoseGraph& graph,
-						   size_t anchor, double cell_m)
+/** Each keyframe's origin and points in the anchor frame. */
+std::vector<TSubmapView> submapViews(const std::vector<std::pair<size_t, TPointCloud2D>>& keyframes,
+									 const CPoseGraph& graph, size_t anchor)
 {
-	TPointCloud2D out;
-	std::unordered_set<int64_t> used;
+	std::vector<TSubmapView> views;
 	for (const auto& [node, points] : keyframes)
 	{
 		const auto rel = mrpt::poses::CPose2D(relativePose(graph.nodes()[anchor].pose, graph.nodes()[node].pose));
+		TSubmapView v;
+		v.origin = {static_cast<float>(rel.x()), static_cast<float>(rel.y())};
+		v.points.reserve(points.size());
 		for (const auto& p : points)
 		{
 			double x, y;
 			rel.composePoint(p.x, p.y, x, y);
-			const int64_t key = static_cast<int64_t>(static_cast<uint64_t>(static_cast<int64_t>(std::floor(x / cell_m))) << 32) ^
-								(static_cast<int64_t>(std::floor(y / cell_m)) & 0xffffffff);
-			if (used.insert(key).second) out.push_back({static_cast<float>(x), static_cast<float>(y)});
+			v.points.push_back({static_cast<float>(x), static_cast<float>(y)});
 		}
+		views.push_back(std::move(v));
 	}
+	return views;
+}
+
+/** The views' points, one per cell of `cell_m`. */
+TPointCloud2D thinnedPoints(const std::vector<TSubmapView>& views, double cell_m)
+{
+	TPointCloud2D out;
+	std::unordered_set<int64_t> used;
+	for (const auto& v : views)
+		for (const auto& p : v.points)
+		{
+			const auto key = common::cellKey(static_cast<int>(std::floor(p.x / cell_m)), static_cast<int>(std::floor(p.y / cell_m)));
+			if (used.insert(key).second) out.push_back(p);
+		}
 	return out;
 }
 }  // namespace
@@ -63,7 +79,8 @@ void CLoopClosureDetector::closeSubmap(const CPoseGraph& graph)
 	s.first_node = m_pending.front().first;
 	s.last_node = m_pending.back().first;
 	s.anchor_node = m_pending[m_pending.size() / 2].first;
-	s.points = submapPoints(m_pending, graph, s.anchor_node, m_options.matcher.resolution_m);
+	s.views = submapViews(m_pending, graph, s.anchor_node);
+	s.points = thinnedPoints(s.views, m_options.matcher.resolution_m);
 	m_submaps.push_back(std::move(s));
 	m_pending.clear();
 }
@@ -76,9 +93,10 @@ const CLoopClosureDetector::TSubmapField& CLoopClosureDetector::fieldOf(size_t s
 			m_fieldCache.splice(m_fieldCache.begin(), m_fieldCache, it);
 			return *m_fieldCache.front().second;
 		}
-	auto field = std::make_unique<TSubmapField>(TSubmapField{CCorrelativeScanMatcher(m_options.matcher), {}});
+	auto field = std::make_unique<TSubmapField>(TSubmapField{CCorrelativeScanMatcher(m_options.matcher), {}, {}});
 	const auto& points = m_submaps[submap].points;
 	field->matcher.setReference(points);
+	field->free.build(field->matcher.grid(), m_submaps[submap].views);
 	field->points.reserve(points.size());
 	for (const auto& p : points) field->points.insertPointFast(p.x, p.y, 0);
 	m_fieldCache.emplace_front(submap, std::move(field));

@@ -15,12 +15,13 @@ struct CLoopClosureDetector::TCandidate
 	TSearchWindow window;
 };
 
-/** A submap's likelihood field and its points as an MRPT map for the ICP
- * check: both built once when the submap is first matched (the points map
+/** A submap's likelihood field, its points as an MRPT map for the ICP check
+ * and its observed free space: built once when the submap is first matched (the points map
  * keeps its k-d tree between ICP calls). */
 struct CLoopClosureDetector::TSubmapField
 {
 	CCorrelativeScanMatcher matcher;
 	mrpt::maps::CSimplePointsMap points;
+	CObservedFreeSpace free;  //!< cells the submap's beams crossed, on the matcher's grid
 };
 }  // namespace hslam::graph

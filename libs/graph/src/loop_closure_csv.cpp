@@ -9,7 +9,7 @@ std::string loopClosureCsvHeader()
 {
 	return "query_keyframe,anchor_keyframe,submap,accepted,reason,score,hit_fraction,second_score,icp_goodness,"
 		   "icp_shift_m,icp_shift_deg,consistency_chi2,window_xy_m,window_yaw_deg,rel_x_m,rel_y_m,rel_yaw_deg,"
-		   "query_x_m,query_y_m,matched_x_m,matched_y_m,anchor_x_m,anchor_y_m,match_ms";
+		   "query_x_m,query_y_m,matched_x_m,matched_y_m,anchor_x_m,anchor_y_m,match_ms,free_side_fraction";
 }
 
 std::string loopClosureCsvRow(const TLoopClosure& c)
@@ -22,7 +22,7 @@ std::string loopClosureCsvRow(const TLoopClosure& c)
 	  << c.window_xy_m << ',' << mrpt::RAD2DEG(c.window_yaw_rad) << ',' << c.relative.x << ',' << c.relative.y << ','
 	  << mrpt::RAD2DEG(c.relative.phi) << ',' << c.query_pose_estimate.x << ',' << c.query_pose_estimate.y << ','
 	  << c.query_pose_matched.x << ',' << c.query_pose_matched.y << ',' << c.anchor_pose.x << ',' << c.anchor_pose.y
-	  << ',' << c.match_ms;
+	  << ',' << c.match_ms << ',' << c.free_side_fraction;
 	return o.str();
 }
 }  // namespace hslam::graph

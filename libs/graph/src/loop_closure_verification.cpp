@@ -76,6 +76,13 @@ bool CLoopClosureDetector::checkConsistency(const TCandidate& c, TLoopClosure& o
 	return true;
 }
 
+bool CLoopClosureDetector::checkFreeSide(const TSubmapField& field, TLoopClosure& out) const
+{
+	out.free_side_fraction = freeSideFigures(field.matcher.grid(), field.free, m_queryPoints, out.relative).fraction();
+	if (out.free_side_fraction < m_options.min_free_side_fraction) return reject(out, "walls seen from behind");
+	return true;
+}
+
 bool CLoopClosureDetector::refineWithIcp(const TSubmapField& field, TLoopClosure& out) const
 {
 	const auto current = toPointsMap(m_queryPoints);
@@ -125,7 +132,8 @@ TLoopClosure CLoopClosureDetector::verify(const TCandidate& c, size_t node, cons
 	TCorrelativeMatch best;
 	if (!matchBest(field.matcher, c, out, best) || !refineWithIcp(field, out)) return finish();
 	out.covariance = field.matcher.covarianceOf(m_queryPoints, best);
-	if (!checkConsistency(c, out) || !checkUniqueness(field.matcher, c, best, out)) return finish();
+	if (!checkFreeSide(field, out) || !checkConsistency(c, out) || !checkUniqueness(field.matcher, c, best, out))
+		return finish();
 	out.accepted = true;
 	out.reason = "accepted";
 	return finish();

@@ -96,6 +96,9 @@ class CGraphBackend
    private:
 	size_t addNodeAndSequentialEdge(const TKeyframe& keyframe);
 	void addClosures(std::vector<TLoopClosure>& tested);
+	void addLoopEdge(TLoopClosure& c);
+	std::vector<size_t> confirmClosures(std::vector<TLoopClosure>& tested);
+	void rememberVerified(size_t node, size_t firstNew);
 	void markDroppedClosures(const TOptimizationReport& report);
 
 	TGraphBackendOptions m_options;
@@ -104,6 +107,7 @@ class CGraphBackend
 	std::vector<Eigen::Matrix3d> m_chainCov;
 	std::vector<mrpt::math::TPose2D> m_frontendPoses;
 	std::vector<TLoopClosure> m_closures;
+	std::vector<size_t> m_recentVerified;  //!< m_closures indices: passed verification in the confirmation window
 	TBackendTiming m_timing;
 };
 

@@ -18,17 +18,27 @@
  *     fraction >= min_hit_fraction (overlap), with >= min_query_points points;
  *  2. ICP agreement: MRPT CICP from the correlative pose converges with
  *     goodness >= min_icp_goodness and moves less than the agreement limits;
- *  3. consistency: the correction the closure implies for the current pose is
+ *  3. free side (free_space_check.h): at the matched pose at least
+ *     min_free_side_fraction of the query's beams that end on a submap wall
+ *     reach it through space the submap's own beams crossed (a wall is not
+ *     seen from behind);
+ *  4. consistency: the correction the closure implies for the current pose is
  *     within the chi2 gate of the relative covariance of the odometry chain
  *     plus the closure's covariance;
- *  4. uniqueness: no other pose in the window (outside a small exclusion)
+ *  5. uniqueness: no other pose in the window (outside a small exclusion)
  *     reaches ambiguity_ratio x the best score (repeated rooms, corridors).
- * Then the back-end adds the edge and optimises; the graph's robust step may
- * still drop it (reason "dropped by optimiser"). */
+ * Then the back-end (CGraphBackend) asks for a second opinion: a closure that
+ * passed is held ("awaiting confirmation") until another one, from the same
+ * or one of the next confirm_within_keyframes keyframes, asks the graph for
+ * the same correction (within confirm_xy_m / confirm_yaw_deg); then both are
+ * added and the graph optimised. One that finds no partner stays out ("not
+ * confirmed"). The graph's robust step may still drop an added edge (reason
+ * "dropped by optimiser"). */
 #pragma once
 
 #include <hslam/graph/CCorrelativeScanMatcher.h>
 #include <hslam/graph/CPoseGraph.h>
+#include <hslam/graph/free_space_check.h>
 
 #include <list>
 #include <memory>
@@ -51,12 +61,15 @@ struct TLoopClosureOptions
 	double min_score = 0.55;  //!< mean likelihood of the query points
 	double min_hit_fraction = 0.6;  //!< fraction of query points on the submap (overlap)
 	int min_query_points = 50;
-	double ambiguity_ratio = 0.9;  //!< a second peak at this fraction of the best rejects the closure
+	double ambiguity_ratio = 0.85;  //!< a second peak at this fraction of the best rejects the closure
 	double ambiguity_xy_m = 0.5, ambiguity_yaw_rad = mrpt::DEG2RAD(10.0);  //!< what counts as "another" peak
 	double min_icp_goodness = 0.7;
 	double icp_max_shift_m = 0.15, icp_max_shift_yaw_rad = mrpt::DEG2RAD(2.0);
 	double consistency_chi2 = 16.27;  //!< 3-dof chi2 gate (99.9 %) of the implied correction
+	double min_free_side_fraction = 0.5;  //!< of the query's wall hits that must come from the submap's free side
 	int max_cached_fields = 16;  //!< likelihood fields kept in memory
+	int confirm_within_keyframes = 10;  //!< a closure waits this long for a second that agrees (0: none needed)
+	double confirm_xy_m = 0.3, confirm_yaw_rad = mrpt::DEG2RAD(3.0);  //!< agreement of two closures' corrections
 
 	template <class V>
 	void visit(V& v)
@@ -82,7 +95,11 @@ struct TLoopClosureOptions
 		v.real("icp_max_shift_m", icp_max_shift_m, 0.0, 10.0);
 		v.degrees("icp_max_shift_deg", icp_max_shift_yaw_rad, 0.0, 180.0);
 		v.real("consistency_chi2", consistency_chi2, 0.0, 1e9);
+		v.real("min_free_side_fraction", min_free_side_fraction, 0.0, 1.0);
 		v.integer("max_cached_fields", max_cached_fields, 1, 10000);
+		v.integer("confirm_within_keyframes", confirm_within_keyframes, 0, 1000);
+		v.real("confirm_xy_m", confirm_xy_m, 0.0, 100.0);
+		v.degrees("confirm_yaw_deg", confirm_yaw_rad, 0.0, 180.0);
 	}
 };
 
@@ -91,6 +108,7 @@ struct TSubmap
 {
 	size_t first_node = 0, last_node = 0, anchor_node = 0;
 	TPointCloud2D points;  //!< anchor frame, thinned to one point per cell
+	std::vector<TSubmapView> views;  //!< each keyframe's origin and points in the anchor frame (its free space)
 };
 
 /** A tested candidate: accepted or rejected, with its figures. */
@@ -107,6 +125,7 @@ struct TLoopClosure
 	double score = 0, hit_fraction = 0, second_score = 0;
 	double icp_goodness = 0, icp_shift_m = 0, icp_shift_yaw_rad = 0;
 	double consistency_chi2 = 0;
+	double free_side_fraction = 1;  //!< of the query's wall hits at the matched pose, through the submap's free space
 	bool accepted = false;
 	std::string reason;  //!< "accepted" or why not
 	double match_ms = 0;
@@ -149,6 +168,7 @@ class CLoopClosureDetector
 	bool checkUniqueness(const CCorrelativeScanMatcher& m, const TCandidate& c, const TCorrelativeMatch& best,
 						 TLoopClosure& out) const;
 	bool checkConsistency(const TCandidate& c, TLoopClosure& out) const;
+	bool checkFreeSide(const TSubmapField& field, TLoopClosure& out) const;
 	bool refineWithIcp(const TSubmapField& field, TLoopClosure& out) const;
 	void closeSubmap(const CPoseGraph& graph);
 	const TSubmapField& fieldOf(size_t submap);
@@ -160,6 +180,11 @@ class CLoopClosureDetector
 	size_t m_queryNode = 0;
 	std::list<std::pair<size_t, std::unique_ptr<TSubmapField>>> m_fieldCache;  //!< most recent first
 };
+
+/** Whether two verified closures ask `graph` (its current poses) for the same
+ * correction: b's measured pose against b's query pose moved by the
+ * world-frame correction a implies at its own query, within xy_m / yaw_rad. */
+bool closuresAgree(const TLoopClosure& a, const TLoopClosure& b, const CPoseGraph& graph, double xy_m, double yaw_rad);
 
 /** Covariance of node i relative to node a, in the world frame, from the
  * chain covariances: Sigma_i - J Sigma_a J^T (J = d(a (+) r)/da), eigenvalues
