@@ -1,4 +1,5 @@
 #include <hslam/graph/CLoopClosureDetector.h>
+#include <hslam/common/cell_key.h>
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/poses/CPose2D.h>
 
@@ -26,8 +27,7 @@ TPointCloud2D submapPoints(const std::vector<std::pair<size_t, TPointCloud2D>>& 
 		{
 			double x, y;
 			rel.composePoint(p.x, p.y, x, y);
-			const int64_t key = static_cast<int64_t>(static_cast<uint64_t>(static_cast<int64_t>(std::floor(x / cell_m))) << 32) ^
-								(static_cast<int64_t>(std::floor(y / cell_m)) & 0xffffffff);
+			const int64_t key = common::cellKey(static_cast<int>(std::floor(x / cell_m)), static_cast<int>(std::floor(y / cell_m)));
 			if (used.insert(key).second) out.push_back({static_cast<float>(x), static_cast<float>(y)});
 		}
 	}
