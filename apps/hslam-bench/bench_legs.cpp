@@ -36,7 +36,6 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
-#include <iomanip>
 #include <iostream>
 #include <map>
 
@@ -184,6 +183,61 @@ void addNegative(TLevel& level, const TLegsPerScan& reported)
 	for (const auto& legs : reported) level.false_legs += legs.size();
 }
 
+/** The per-part table of evaluateMethod; its header (printed there, as
+ * published) names the columns, not their edges. A part with people shows
+ * annotated legs and, per level, matched legs (recall); a part without people
+ * the false legs per scan of each level. */
+CReportTable partTable()
+{
+	return CReportTable(std::cout, {{"", 2, true},
+									{"part", 24, true},
+									{"scans", 6},
+									{"annotated", 11},
+									{"detected (recall)", 19},
+									{"dynamic (recall)", 18},
+									{"late (recall)", 16}});
+}
+
+/** `matched` right-aligned in `width`, then its recall: "   12 (0.923)". */
+std::string matchedCell(const TScored& s, int width)
+{
+	return padLeft(std::to_string(s.matched), width) + " (" + fixed(ratio(s.matched, s.annotated), 3) + ")";
+}
+
+/** Scores a part with people at the three levels, adds them to `r` (and the
+ * detector's misses to r.miss_reasons); returns the row's level cells. */
+std::vector<std::string> scorePositivePart(const benchdata::TLegDataPart& part,
+										   const dynamic::CDynamicObjectFilter::TOptions& options,
+										   const TClassifierPtr& classifier, const benchdata::TLegOutputLevels& levels,
+										   TMethodResult& r)
+{
+	constexpr double kMatchRadius_m = 0.20;
+	const double maxRange_m = options.detector.max_range_m;
+	const auto det = benchdata::scoreAgainstAnnotations(levels.detected, part.annotations, kMatchRadius_m, maxRange_m);
+	const auto dy = benchdata::scoreAgainstAnnotations(levels.dynamic, part.annotations, kMatchRadius_m, maxRange_m);
+	const auto lt = benchdata::scoreAgainstAnnotations(levels.late, part.annotations, kMatchRadius_m, maxRange_m);
+	addPositive(r.detected, det);
+	addPositive(r.dynamic, dy);
+	addPositive(r.late, lt);
+	const dynamic::CLegDetector detector(options.detector, classifier);
+	countMissReasons(detector, part.scans, part.annotations, levels.detected, kMatchRadius_m, r.miss_reasons);
+	return {std::to_string(det.annotated), matchedCell(det, 11), matchedCell(dy, 10), matchedCell(lt, 8)};
+}
+
+/** Adds a part without people to `r`; returns the row's level cells (false
+ * legs per scan of the part). */
+std::vector<std::string> scoreNegativePart(const benchdata::TLegOutputLevels& levels, TMethodResult& r)
+{
+	TLevel d, y, l;
+	addNegative(d, levels.detected);
+	addNegative(y, levels.dynamic);
+	addNegative(l, levels.late);
+	addNegative(r.detected, levels.detected);
+	addNegative(r.dynamic, levels.dynamic);
+	addNegative(r.late, levels.late);
+	return {"-", fixed(d.falsePerScan(), 3), fixed(y.falsePerScan(), 3), fixed(l.falsePerScan(), 3)};
+}
+
 /** Runs the filter over every part; `classifierOf(part index)` gives the
  * classifier to use (null: the rules); negative parts use the ICP poses of
  * `negativePoses` (by part index), positive parts a static scanner. */
@@ -192,48 +246,24 @@ TMethodResult evaluateMethod(const std::string& title, const dynamic::CDynamicOb
 							 const std::function<TClassifierPtr(size_t)>& classifierOf,
 							 const std::map<size_t, std::vector<mrpt::poses::CPose2D>>& negativePoses)
 {
-	constexpr double kMatchRadius_m = 0.20;
 	TMethodResult r;
 	std::cout << "\n" << title << "\n"
 			  << "  part                     scans  annotated   detected (recall)   dynamic (recall)   late (recall)\n"
 			  << "                                  / false legs per scan on parts without people\n";
+	const CReportTable table = partTable();
 	for (size_t i = 0; i < parts.size(); ++i)
 	{
 		const auto& part = parts[i];
 		const auto classifier = classifierOf(i);
 		const auto poses = part.has_people ? std::vector<mrpt::poses::CPose2D>(part.scans.size()) : negativePoses.at(i);
 		const auto levels = benchdata::runLegFilter(options, classifier, part.scans, poses);
-		const auto &all = levels.detected, &dyn = levels.dynamic, &late = levels.late;
 		r.filter_s += levels.seconds;
 		r.filter_scans += part.scans.size();
-		std::cout << "  " << std::left << std::setw(24) << part.name << std::right << std::setw(6) << part.scans.size();
-		if (part.has_people)
-		{
-			const auto det = benchdata::scoreAgainstAnnotations(all, part.annotations, kMatchRadius_m, options.detector.max_range_m);
-			const auto dy = benchdata::scoreAgainstAnnotations(dyn, part.annotations, kMatchRadius_m, options.detector.max_range_m);
-			const auto lt = benchdata::scoreAgainstAnnotations(late, part.annotations, kMatchRadius_m, options.detector.max_range_m);
-			addPositive(r.detected, det);
-			addPositive(r.dynamic, dy);
-			addPositive(r.late, lt);
-			const dynamic::CLegDetector detector(options.detector, classifier);
-			countMissReasons(detector, part.scans, part.annotations, all, kMatchRadius_m, r.miss_reasons);
-			std::cout << std::setw(11) << det.annotated << std::setw(11) << det.matched << " (" << std::setprecision(3)
-					  << ratio(det.matched, det.annotated) << ")" << std::setw(10) << dy.matched << " ("
-					  << ratio(dy.matched, dy.annotated) << ")" << std::setw(8) << lt.matched << " ("
-					  << ratio(lt.matched, lt.annotated) << ")\n";
-		}
-		else
-		{
-			TLevel d, y, l;
-			addNegative(d, all);
-			addNegative(y, dyn);
-			addNegative(l, late);
-			addNegative(r.detected, all);
-			addNegative(r.dynamic, dyn);
-			addNegative(r.late, late);
-			std::cout << std::setw(11) << "-" << std::setw(19) << std::setprecision(3) << d.falsePerScan()
-					  << std::setw(18) << y.falsePerScan() << std::setw(16) << l.falsePerScan() << "\n";
-		}
+		std::vector<std::string> cells{"", part.name, std::to_string(part.scans.size())};
+		const auto scored =
+			part.has_people ? scorePositivePart(part, options, classifier, levels, r) : scoreNegativePart(levels, r);
+		cells.insert(cells.end(), scored.begin(), scored.end());
+		table.printRow(cells);
 	}
 	std::cout << "  missed by the detector, verdict of the nearest candidate:";
 	for (const auto& [why, n] : r.miss_reasons) std::cout << " " << why << "=" << n;
@@ -256,18 +286,29 @@ TTrailResult printTrail(const std::string& title, const dynamic::CDynamicObjectF
 						const TClassifierPtr& classifier, const std::string& rawlog, const std::string& png)
 {
 	const auto trail = trailOnStaticLog(options, classifier, rawlog, png);
-	std::cout << "  " << std::left << std::setw(26) << title << std::right << std::setw(8) << trail.static_cells
-			  << std::setw(14) << trail.occupied_without << " / " << trail.occupied_with << std::setw(12)
-			  << trail.trail_without << " / " << trail.trail_with << std::setw(10) << trail.person_tracks
-			  << std::setw(12) << std::setprecision(1) << ratio(trail.masked_beams, trail.scans) << "   " << png
-			  << "\n";
+	// The header (printed by runLegsSuite, as published) names the columns, not their edges.
+	const CReportTable table(std::cout, {{"", 2, true},
+										 {"method", 26, true},
+										 {"static", 8},
+										 {"occupied w/o / with", 0},
+										 {"trail w/o / with", 0},
+										 {"persons", 10},
+										 {"masked/scan", 12},
+										 {"image", 0}});
+	const auto pair = [](size_t without, size_t with, int width)
+	{ return padLeft(std::to_string(without), width) + " / " + std::to_string(with); };
+	table.printRow({"", title, std::to_string(trail.static_cells), pair(trail.occupied_without, trail.occupied_with, 14),
+					pair(trail.trail_without, trail.trail_with, 12), std::to_string(trail.person_tracks),
+					fixed(ratio(trail.masked_beams, trail.scans), 1), "   " + png});
 	return trail;
 }
+
 /** Robot poses of the parts without people (no odometry, no tf): ICP per sensor. */
 std::map<size_t, std::vector<mrpt::poses::CPose2D>> negativePartPoses(const std::vector<benchdata::TLegDataPart>& parts)
 {
 	std::map<size_t, std::vector<mrpt::poses::CPose2D>> negativePoses;
 	std::cout << "\nRobot motion of the parts without people (no odometry, no tf): ICP per sensor\n";
+	const CReportTable table(std::cout, {{"", 2, true}, {"part", 24, true}, {"path", 0}});
 	for (size_t i = 0; i < parts.size(); ++i)
 		if (!parts[i].has_people)
 		{
@@ -275,8 +316,7 @@ std::map<size_t, std::vector<mrpt::poses::CPose2D>> negativePartPoses(const std:
 			double path_m = 0;
 			for (size_t k = 1; k < negativePoses[i].size(); ++k)
 				path_m += negativePoses[i][k].distanceTo(negativePoses[i][k - 1]);
-			std::cout << "  " << std::left << std::setw(24) << parts[i].name << std::right << std::fixed
-					  << std::setprecision(1) << path_m << " m\n";
+			table.printRow({"", parts[i].name, fixed(path_m, 1) + " m"});
 		}
 	return negativePoses;
 }

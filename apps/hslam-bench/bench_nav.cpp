@@ -19,6 +19,7 @@
 #include <hslam/sim/scene.h>
 #include "bench_common.h"
 #include "bench_nav_trace.h"
+#include "bench_report.h"
 
 #include <mrpt/3rdparty/tclap/CmdLine.h>
 #include <mrpt/config/CConfigFile.h>
@@ -228,23 +229,30 @@ TNavStats statsOf(const std::vector<TNavRun>& runs, const std::string& method, c
 	return st;
 }
 
+std::vector<std::string> methodRow(const std::string& method, const TNavStats& s)
+{
+	const auto count = [](int n) { return std::to_string(n); };
+	return {method,
+			count(s.successes) + "/" + count(s.runs) + " (" + fixed(100 * s.successRate(), 0) + " %)",
+			count(s.collisions),
+			count(s.person_contacts),
+			count(s.timeouts) + " / " + count(s.gave_up),
+			fixed(s.path_ratio, 2),
+			fixed(s.time_s, 1) + " s",
+			fixed(s.min_clearance_m, 2) + " / " + fixed(s.median_min_clearance_m, 2) + " m",
+			fixed(s.cpu_ms, 2) + " ms"};
+}
+
 void printMethodTable(const std::vector<TNavRun>& runs, const TNavBenchOptions& o)
 {
-	std::cout << "\n| method | success | collisions (static) | person contacts | timeouts / gave up | path / shortest "
-				 "| time to target | min clearance to static obstacles (worst / median) | CPU / control step |\n"
-			  << "| --- | --- | --- | --- | --- | --- | --- | --- | --- |\n"
-			  << std::fixed;
-	for (const auto& m : o.methods)
-	{
-		const auto s = statsOf(runs, m);
-		std::cout << "| " << m << " | " << s.successes << "/" << s.runs << " (" << std::setprecision(0)
-				  << 100 * s.successRate() << " %) | " << s.collisions << " | " << s.person_contacts << " | "
-				  << s.timeouts << " / " << s.gave_up << " | " << std::setprecision(2) << s.path_ratio << " | "
-				  << std::setprecision(1) << s.time_s << " s | " << std::setprecision(2) << s.min_clearance_m << " / "
-				  << s.median_min_clearance_m << " m | " << std::setprecision(2) << s.cpu_ms << " ms |\n";
-	}
+	std::cout << "\n";
+	const CMarkdownTable table(std::cout, {"method", "success", "collisions (static)", "person contacts",
+										   "timeouts / gave up", "path / shortest", "time to target",
+										   "min clearance to static obstacles (worst / median)", "CPU / control step"});
+	table.printHeader();
+	for (const auto& m : o.methods) table.printRow(methodRow(m, statsOf(runs, m)));
 	std::cout << "(path / shortest and time: means over the successful runs; shortest: 8-connected path keeping "
-			  << o.shortest_path_clearance_m << " m from static obstacles)\n";
+			  << fixed(o.shortest_path_clearance_m, 2) << " m from static obstacles)\n";
 }
 
 std::vector<std::string> worldsOf(const std::vector<sim::TNavScenario>& pairs)
@@ -258,48 +266,47 @@ std::vector<std::string> worldsOf(const std::vector<sim::TNavScenario>& pairs)
 void printWorldTable(const std::vector<TNavRun>& runs, const std::vector<std::string>& worlds,
 					 const TNavBenchOptions& o)
 {
-	std::cout << "\nsuccess (collisions) per world:\n\n| world |";
-	for (const auto& m : o.methods) std::cout << " " << m << " |";
-	std::cout << "\n| --- |";
-	for (size_t i = 0; i < o.methods.size(); ++i) std::cout << " --- |";
-	std::cout << "\n";
+	std::cout << "\nsuccess (collisions) per world:\n\n";
+	std::vector<std::string> headers{"world"};
+	headers.insert(headers.end(), o.methods.begin(), o.methods.end());
+	const CMarkdownTable table(std::cout, headers);
+	table.printHeader();
 	for (const auto& w : worlds)
 	{
-		std::cout << "| " << w << " |";
+		std::vector<std::string> cells{w};
 		for (const auto& m : o.methods)
 		{
 			const auto s = statsOf(runs, m, w);
-			std::cout << " " << s.successes << "/" << s.runs << " (" << s.collisions << ") |";
+			cells.push_back(std::to_string(s.successes) + "/" + std::to_string(s.runs) + " (" +
+							std::to_string(s.collisions) + ")");
 		}
-		std::cout << "\n";
+		table.printRow(cells);
 	}
 }
 
 void printKeyValues(const std::vector<TNavRun>& runs, const std::vector<std::string>& worlds,
 					const TNavBenchOptions& o, size_t pairs)
 {
-	std::cout << "\nnav_pairs=" << pairs << "\nnav_worlds=" << worlds.size() << "\n" << std::setprecision(4);
+	std::cout << "\n";
+	CKeyValueLines keys(std::cout, 4);
+	keys("nav_pairs", pairs)("nav_worlds", worlds.size());
 	double best = -1;
 	std::string bestMethod = "none";
 	for (const auto& m : o.methods)
 	{
 		const auto s = statsOf(runs, m);
 		if (m != "ours" && s.successRate() > best) best = s.successRate(), bestMethod = m;
-		std::cout << "nav_success_rate_" << m << "=" << s.successRate() << "\nnav_collisions_" << m << "="
-				  << s.collisions << "\nnav_person_contacts_" << m << "=" << s.person_contacts << "\nnav_timeouts_"
-				  << m << "=" << s.timeouts << "\nnav_gave_up_" << m << "=" << s.gave_up << "\nnav_path_ratio_" << m
-				  << "=" << s.path_ratio << "\nnav_time_to_target_s_" << m << "=" << s.time_s
-				  << "\nnav_min_clearance_m_" << m << "=" << s.min_clearance_m << "\nnav_cpu_ms_per_step_" << m
-				  << "=" << s.cpu_ms << "\n";
-		for (const auto& w : worlds)
-			std::cout << "nav_success_rate_" << m << "_" << w << "=" << statsOf(runs, m, w).successRate() << "\n";
+		keys("nav_success_rate_" + m, s.successRate())("nav_collisions_" + m, s.collisions)(
+			"nav_person_contacts_" + m, s.person_contacts)("nav_timeouts_" + m, s.timeouts)(
+			"nav_gave_up_" + m, s.gave_up)("nav_path_ratio_" + m, s.path_ratio)("nav_time_to_target_s_" + m, s.time_s)(
+			"nav_min_clearance_m_" + m, s.min_clearance_m)("nav_cpu_ms_per_step_" + m, s.cpu_ms);
+		for (const auto& w : worlds) keys("nav_success_rate_" + m + "_" + w, statsOf(runs, m, w).successRate());
 	}
 	if (best < 0) return;
-	std::cout << "nav_success_rate_mrpt_best=" << best << "\nnav_mrpt_best_method=" << bestMethod << "\n";
+	keys("nav_success_rate_mrpt_best", best)("nav_mrpt_best_method", bestMethod);
 	// CPU per control step of ours over that of MRPT's best method (the one above).
 	if (std::find(o.methods.begin(), o.methods.end(), "ours") != o.methods.end())
-		std::cout << "nav_cpu_ratio_ours_vs_mrpt_best=" << statsOf(runs, "ours").cpu_ms / statsOf(runs, bestMethod).cpu_ms
-				  << "\n";
+		keys("nav_cpu_ratio_ours_vs_mrpt_best", statsOf(runs, "ours").cpu_ms / statsOf(runs, bestMethod).cpu_ms);
 }
 
 nav::TSubsumptionOptions loadOursConfig(const std::string& path)

@@ -22,6 +22,22 @@ void CReportTable::printRow(const std::vector<std::string>& cells) const
 	m_out << std::right << "\n";
 }
 
+void CMarkdownTable::printHeader() const
+{
+	printRow(m_headers);
+	printRow(std::vector<std::string>(m_headers.size(), "---"));
+}
+
+void CMarkdownTable::printRow(const std::vector<std::string>& cells) const
+{
+	if (cells.size() != m_headers.size())
+		throw std::logic_error("CMarkdownTable: " + std::to_string(cells.size()) + " cells for " +
+							   std::to_string(m_headers.size()) + " columns");
+	m_out << "|";
+	for (const auto& c : cells) m_out << " " << c << " |";
+	m_out << "\n";
+}
+
 std::string fixed(double value, int decimals)
 {
 	std::ostringstream text;

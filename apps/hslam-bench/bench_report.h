@@ -35,6 +35,23 @@ class CReportTable
 	std::vector<TColumn> m_columns;
 };
 
+/** A markdown table: a header row, the `| --- |` separator row, then rows
+ * of texts, each cell as given (no padding: markdown aligns the columns). */
+class CMarkdownTable
+{
+   public:
+	CMarkdownTable(std::ostream& out, std::vector<std::string> headers) : m_out(out), m_headers(std::move(headers)) {}
+
+	/** The header row and the separator row. */
+	void printHeader() const;
+	/** `| a | b |`: one cell per column; throws std::logic_error on a wrong count. */
+	void printRow(const std::vector<std::string>& cells) const;
+
+   private:
+	std::ostream& m_out;
+	std::vector<std::string> m_headers;
+};
+
 /** `value` with `decimals` digits after the point (std::fixed). */
 std::string fixed(double value, int decimals);
 

@@ -13,6 +13,7 @@
  *   false       person (leg) tracks ever dynamic that were never within
  *               0.5 m of a true person. */
 #include "bench_csv.h"
+#include "bench_report.h"
 #include "bench_vision.h"
 
 #include <hslam/common/config_overrides.h>
@@ -25,7 +26,6 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
-#include <iomanip>
 #include <iostream>
 #include <map>
 #include <set>
@@ -218,15 +218,28 @@ TCueScore runAndScore(const std::string& dir, const std::vector<io::TRawlogEntry
 	return sc;
 }
 
-void printCueRow(const std::string& name, const TCueScore& s, double seconds)
+/** The table of the off / on runs (recall in %, delays and run time in s). */
+CReportTable cueTable()
+{
+	return CReportTable(std::cout, {{"camera cues", 18, true},
+									{"recall", 8},
+									{"in view", 12},
+									{"first (s)", 12},
+									{"false P", 9},
+									{"false L", 10},
+									{"cues", 7},
+									{"cue legs", 10},
+									{"run s", 8}});
+}
+
+void printCueRow(const CReportTable& table, const std::string& name, const TCueScore& s, double seconds)
 {
 	const auto pct = [](size_t a, size_t b) { return b ? 100.0 * static_cast<double>(a) / static_cast<double>(b) : NAN; };
-	std::cout << std::left << std::setw(18) << name << std::right << std::fixed << std::setprecision(1)
-			  << std::setw(8) << pct(s.covered, s.visible) << std::setw(12) << pct(s.covered_in_view, s.visible_in_view)
-			  << std::setw(12) << std::setprecision(2) << s.first_delay_s << std::setw(9)
-			  << (std::to_string(s.false_person_tracks) + "/" + std::to_string(s.person_tracks)) << std::setw(10)
-			  << (std::to_string(s.false_leg_tracks) + "/" + std::to_string(s.leg_tracks)) << std::setw(7) << s.cues
-			  << std::setw(10) << s.cue_legs << std::setw(8) << std::setprecision(2) << seconds << "\n";
+	const auto share = [](size_t a, size_t b) { return std::to_string(a) + "/" + std::to_string(b); };
+	table.printRow({name, fixed(pct(s.covered, s.visible), 1), fixed(pct(s.covered_in_view, s.visible_in_view), 1),
+					fixed(s.first_delay_s, 2), share(s.false_person_tracks, s.person_tracks),
+					share(s.false_leg_tracks, s.leg_tracks), std::to_string(s.cues), std::to_string(s.cue_legs),
+					fixed(seconds, 2)});
 }
 }  // namespace
 
@@ -240,23 +253,20 @@ bool runVisionCuesPart(const std::string& dir)
 	const std::vector<io::TRawlogEntry> entries = io::readRawlogEntries(dir + "/sim.rawlog");
 	const TCueTruth truth = loadCueTruth(dir);
 	std::cout << "Camera cues vs laser leg tracks (" << dir << ", batch pipeline, " << truth.poses.size()
-			  << " scans; recall of visible person-scans, %)\n"
-			  << std::left << std::setw(18) << "camera cues" << std::right << std::setw(8) << "recall" << std::setw(12)
-			  << "in view" << std::setw(12) << "first (s)" << std::setw(9) << "false P" << std::setw(10) << "false L"
-			  << std::setw(7) << "cues" << std::setw(10) << "cue legs" << std::setw(8) << "run s" << "\n";
+			  << " scans; recall of visible person-scans, %)\n";
+	const CReportTable table = cueTable();
+	table.printHeader();
 	double secOff = 0, secOn = 0;
 	const TCueScore off = runAndScore(dir, entries, truth, false, secOff), on = runAndScore(dir, entries, truth, true, secOn);
-	printCueRow("off (default)", off, secOff);
-	printCueRow("on", on, secOn);
+	printCueRow(table, "off (default)", off, secOff);
+	printCueRow(table, "on", on, secOn);
 	std::cout << "cue regions whose bearing range (+- camera_cue_margin_deg) holds a true person: " << off.cues_on_people
 			  << " of " << off.cues << "\n";
 	const auto frac = [](size_t a, size_t b) { return b ? static_cast<double>(a) / static_cast<double>(b) : NAN; };
-	std::cout << std::setprecision(4) << "cue_recall_off=" << frac(off.covered, off.visible)
-			  << "\ncue_recall_on=" << frac(on.covered, on.visible) << "\ncue_regions_on_people="
-			  << frac(off.cues_on_people, off.cues) << "\ncue_false_person_tracks_off="
-			  << off.false_person_tracks << "\ncue_false_person_tracks_on=" << on.false_person_tracks
-			  << "\ncue_first_confirmation_s_off=" << off.first_delay_s << "\ncue_first_confirmation_s_on="
-			  << on.first_delay_s << "\n";
+	CKeyValueLines(std::cout, 4)("cue_recall_off", frac(off.covered, off.visible))(
+		"cue_recall_on", frac(on.covered, on.visible))("cue_regions_on_people", frac(off.cues_on_people, off.cues))(
+		"cue_false_person_tracks_off", off.false_person_tracks)("cue_false_person_tracks_on", on.false_person_tracks)(
+		"cue_first_confirmation_s_off", off.first_delay_s)("cue_first_confirmation_s_on", on.first_delay_s);
 	return true;
 }
 

@@ -1,3 +1,4 @@
+#include <hslam/common/cell_key.h>
 #include <hslam/fusion/se2.h>
 #include <hslam/matching/CKeyframePointMap.h>
 
@@ -135,8 +136,7 @@ void CKeyframePointMap::mergedWindowPoints(std::vector<float>& xs, std::vector<f
 	for (size_t id : m_windowIds)
 		for (const auto& p : m_keyframes[id - m_firstId].worldPoints)
 		{
-			const int64_t key = static_cast<int64_t>(static_cast<uint64_t>(static_cast<int64_t>(std::floor(p.x * inv))) << 32) ^
-								static_cast<uint32_t>(static_cast<int32_t>(std::floor(p.y * inv)));
+			const int64_t key = common::cellKey(static_cast<int>(std::floor(p.x * inv)), static_cast<int>(std::floor(p.y * inv)));
 			const auto [it, added] = cellIndex.try_emplace(key, cells.size());
 			if (added) cells.emplace_back();
 			auto& c = cells[it->second];
