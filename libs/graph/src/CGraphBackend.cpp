@@ -53,7 +53,7 @@ size_t CGraphBackend::addNodeAndSequentialEdge(const TKeyframe& kf)
 							   m_options.weak_xy_std_m * m_options.weak_xy_std_m,
 							   m_options.weak_yaw_std_rad * m_options.weak_yaw_std_rad)
 				   .asDiagonal();
-	const auto& prevPose = m_graph.nodes()[prev].pose;
+	const mrpt::math::TPose2D prevPose = m_graph.nodes()[prev].pose;  // a copy: addNode may reallocate the nodes
 	const size_t node = m_graph.addNode(kf.id, composePose(prevPose, rel), kf.group);
 	TGraphEdge e;
 	e.from = prev, e.to = node, e.relative = rel, e.information = cov.inverse();
