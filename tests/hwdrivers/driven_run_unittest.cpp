@@ -19,6 +19,7 @@
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -91,6 +92,28 @@ TAgreement compareWithTruth(const mrpt::maps::COccupancyGridMap2D& map, const mr
 		}
 	return a;
 }
+/** Frame of `estimate` in the world: the rigid transform that best lays it
+ * onto `truth` (truth pose nearest in time to each estimate): rotation = the
+ * circular mean of the heading differences, translation = the difference of
+ * the centroids after the rotation. */
+mrpt::poses::CPose2D estimateFrameInWorld(const hslam::common::TTrajectory2D& estimate,
+										  const hslam::common::TTrajectory2D& truth)
+{
+	double s = 0, c = 0, ex = 0, ey = 0, tx = 0, ty = 0;
+	for (const auto& e : estimate)
+	{
+		const auto it = std::lower_bound(truth.begin(), truth.end(), e.t_s,
+										 [](const hslam::common::TTimedPose2D& p, double t) { return p.t_s < t; });
+		const auto& t = it == truth.end() ? truth.back().pose : it->pose;
+		s += std::sin(t.phi - e.pose.phi), c += std::cos(t.phi - e.pose.phi);
+		ex += e.pose.x, ey += e.pose.y, tx += t.x, ty += t.y;
+	}
+	const double n = static_cast<double>(estimate.size()), yaw = std::atan2(s, c);
+	const mrpt::poses::CPose2D rot(0, 0, yaw);
+	const auto centroid = rot + mrpt::poses::CPoint2D(ex / n, ey / n);
+	return mrpt::poses::CPose2D(tx / n - centroid.x(), ty / n - centroid.y(), yaw);
+}
+
 /** The true path (emulator, 20 Hz): each target reached in order, within
  * the controller's 0.2 m plus the odometry's drift; never within 0.2 m of a
  * static obstacle (the collision criterion of sim::runClosedLoop). */
@@ -135,17 +158,27 @@ TEST(DrivenRunIntegration, ShortRunReachesBothTargetsWithoutCollisionAndMapsTheL
 	// truth. Measured over 24 runs (docs/nav.md, "The driven run"): overall
 	// 0.936-0.989 batch, 0.976-0.992 live; free cells 0.977-0.996; occupied
 	// cells 0.59-0.94 batch, 0.81-0.999 live. Thresholds below the worst with
-	// margin.
+	// margin. The batch map is laid onto the world by its own trajectory (as
+	// an ATE is): under CPU load a scan read late carries a late time stamp,
+	// and if that happens while the robot turns at the start the whole batch
+	// map comes out rotated by a few degrees, self-consistent and 1 cm from
+	// the true path (seen at 4.5 deg, occupied agreement 0.26 against kStart).
 	struct TCase
 	{
 		const char* file;
+		mrpt::poses::CPose2D frame;
 		double minOverall, minOccupied;
 	};
 	const auto gt = hslam::sim::rasterizeWorld(scene.world, 0.05, 0.5);
-	for (const auto& [name, minOverall, minOcc] :
-		 {TCase{"map/map.gridmap.gz", 0.90, 0.4}, TCase{"nav/live_map.gridmap.gz", 0.95, 0.7}})
+	const auto truth = hslam::common::readTumFile(out + "/truth.tum");
+	const auto batchFrame = estimateFrameInWorld(hslam::common::readTumFile(out + "/map/trajectory.tum"), truth);
+	std::printf("batch map frame in the world: %.3f %.3f %.2f deg (start %.3f %.3f %.2f deg)\n", batchFrame.x(),
+				batchFrame.y(), mrpt::RAD2DEG(batchFrame.phi()), kStart.x(), kStart.y(), mrpt::RAD2DEG(kStart.phi()));
+	EXPECT_LT(std::abs(mrpt::RAD2DEG(batchFrame.phi())), 10.0);
+	for (const auto& [name, frame, minOverall, minOcc] :
+		 {TCase{"map/map.gridmap.gz", batchFrame, 0.90, 0.4}, TCase{"nav/live_map.gridmap.gz", kStart, 0.95, 0.7}})
 	{
-		const auto a = compareWithTruth(loadGridmap(out + "/" + name), gt, kStart, 0.1);
+		const auto a = compareWithTruth(loadGridmap(out + "/" + name), gt, frame, 0.1);
 		const double freeOk = double(a.freeAgreed) / std::max<size_t>(1, a.free);
 		const double occOk = double(a.occupiedAgreed) / std::max<size_t>(1, a.occupied);
 		std::printf("%s vs ground truth: %zu free cells (%.4f agree), %zu occupied (%.4f agree), overall %.4f\n", name,

@@ -1,6 +1,10 @@
-/* hslam tests: a fresh temporary folder per test, removed afterwards. */
+/* hslam tests: a fresh temporary folder per test, removed afterwards (kept,
+ * and its path printed, when HSLAM_KEEP_TEST_DIRS is set: to look at what a
+ * failing integration test wrote). */
 #pragma once
 
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <random>
 #include <string>
@@ -18,6 +22,11 @@ class CTempDir
 	}
 	~CTempDir()
 	{
+		if (std::getenv("HSLAM_KEEP_TEST_DIRS"))
+		{
+			std::printf("test folder kept: %s\n", m_path.c_str());
+			return;
+		}
 		std::error_code ec;
 		std::filesystem::remove_all(m_path, ec);
 	}
