@@ -108,20 +108,25 @@ class Tables(unittest.TestCase):
     def test_ate_table_three_significant_digits(self):
         runs = [self.run_record("intel", m, a) for m, a in zip(cs.HSLAM_METHODS, [24.017, 13.438, 1.039, 0.0066])]
         table = cs.ate_table(runs, ["intel", "aces"])
-        self.assertEqual(table[1], ["intel", "24.02", "13.44", "1.04", "0.00660"])
-        self.assertEqual(table[2], ["aces", "-", "-", "-", "-"])
+        self.assertEqual(table[1], ["intel", "24.02", "13.44", "1.04", "0.00660", "-"])
+        self.assertEqual(table[2], ["aces", "-", "-", "-", "-", "-"])
 
     def test_timing_table_per_scan(self):
         csv_lines = ["stage,count,mean_ms,p95_ms,max_ms,total_ms", "icp,50,2.0,3,4,100", "ukf,100,0.01,0,0,3",
                      "pose_estimation,100,1,1,1,110"]
         totals = {"icp": cs.read_timing_csv(csv_lines)}
         table = cs.timing_table(totals, 50)
-        self.assertEqual(table[0], ["stage", "lines", "icp", "lines+icp"])
+        self.assertEqual(table[0], ["stage", "lines", "icp", "lines+icp", "default"])
         rows = {r[0]: r for r in table[1:]}
         self.assertEqual(rows["icp"][2], "2.00 ms")
         self.assertEqual(rows["ukf"][2], "0.06 ms")
         self.assertEqual(rows["whole pose_estimation"][2], "2.20 ms")
-        self.assertEqual(rows["line_extraction"][1:], ["-", "-", "-"])
+        self.assertEqual(rows["line_extraction"][1:], ["-", "-", "-", "-"])
+
+    def test_front_ends_run_without_the_back_end_and_the_default_as_shipped(self):
+        self.assertEqual(cs.hslam_overrides("icp"),
+                         ["--set", "pose_estimation.method=icp", "--set", "loop_closure.enabled=false"])
+        self.assertEqual(cs.hslam_overrides(cs.DEFAULT_METHOD), [])
 
     def test_markdown_alignment(self):
         text = cs.markdown([["log", "method", "v", "notes"], ["a", "b", "1", ""]], 2)
