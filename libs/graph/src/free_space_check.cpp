@@ -1,5 +1,6 @@
 /* The free-space check of a loop closure (see free_space_check.h). */
 #include <hslam/graph/free_space_check.h>
+#include <hslam/maps/grid_ray_tracing.h>
 
 #include <cmath>
 
@@ -41,18 +42,23 @@ void CObservedFreeSpace::build(const CMultiResolutionGrid& grid, const std::vect
 {
 	m_width = grid.width(), m_height = grid.height();
 	m_free.assign(static_cast<size_t>(m_width) * m_height, 0);
-	const double step = 0.5 * grid.resolution_m();
+	const double endGap_m = kEndCells * grid.resolution_m();
+	auto mark = [&](const maps::TGlobalCell& c) {
+		if (c.gx >= 0 && c.gy >= 0 && c.gx < m_width && c.gy < m_height)
+			m_free[static_cast<size_t>(c.gy) * m_width + c.gx] = 1;
+	};
 	for (const auto& view : views)
+	{
+		const maps::TGlobalCell from{grid.cellX(view.origin.x), grid.cellY(view.origin.y)};
 		for (const auto& p : view.points)
 		{
-			const TBeam beam(view.origin.x, view.origin.y, p.x, p.y, step);
-			for (int i = 0; i <= beam.steps - 2 * kEndCells; ++i)
-			{
-				const int ix = grid.cellX(beam.x(i)), iy = grid.cellY(beam.y(i));
-				if (ix >= 0 && iy >= 0 && ix < m_width && iy < m_height)
-					m_free[static_cast<size_t>(iy) * m_width + ix] = 1;
-			}
+			const double dx = p.x - view.origin.x, dy = p.y - view.origin.y, range = std::hypot(dx, dy);
+			if (range <= endGap_m) continue;
+			const double k = (range - endGap_m) / range;  // stop kEndCells before the point
+			const maps::TGlobalCell to{grid.cellX(view.origin.x + k * dx), grid.cellY(view.origin.y + k * dy)};
+			maps::forEachCellOnSegment(from, to, mark);
 		}
+	}
 }
 
 TFreeSideFigures freeSideFigures(const CMultiResolutionGrid& grid, const CObservedFreeSpace& free,

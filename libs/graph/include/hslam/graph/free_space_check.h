@@ -34,7 +34,8 @@ struct TSubmapView
 };
 
 /** The cells of a likelihood field's grid that a submap's beams crossed
- * (from each view's origin up to two cells before each point). */
+ * (from each view's origin up to two cells before each point, traced with
+ * the maps library's Bresenham walk, maps::forEachCellOnSegment). */
 class CObservedFreeSpace
 {
    public:
