@@ -35,6 +35,21 @@ TEST(OdometryTracker, AbsoluteReadingsGiveIncrementsInTheRobotFrame)
 	expectPose(tracker.takeIncrement().delta, 0, 0, 0);  // nothing since
 }
 
+TEST(OdometryTracker, OdometryStartingAfterTheFirstScanIsUnknownMotionForThatInterval)
+{
+	// aces cut at entry 14: the first scan has no odometry before it, the
+	// first reading comes with the second scan while the robot turns 28 deg;
+	// reported as zero motion, the turn was rejected as a bad match (NIS 2432).
+	COdometryTracker tracker;
+	EXPECT_FALSE(tracker.takeIncrement().known);  // first scan: no odometry yet
+	tracker.addOdometryObservation(odometryAt(5.0, 2.0, 1.0));
+	EXPECT_FALSE(tracker.takeIncrement().known);  // second scan: only an origin since the first
+	tracker.addOdometryObservation(odometryAt(5.0, 2.0, 1.5));
+	const auto inc = tracker.takeIncrement();
+	ASSERT_TRUE(inc.known);  // from here on, increments are measured
+	expectPose(inc.delta, 0, 0, 0.5);
+}
+
 TEST(OdometryTracker, ActionsAreComposed)
 {
 	COdometryTracker tracker;

@@ -13,6 +13,10 @@ void COdometryTracker::addAction(const mrpt::obs::CActionRobotMovement2D& action
 void COdometryTracker::addOdometryObservation(const mrpt::obs::CObservationOdometry& odometry)
 {
 	m_anyOdometry = true;
+	// The first reading is an origin, not an increment: if a scan came before
+	// it (a recording whose laser driver started before the robot's), the
+	// motion between that scan and this reading is unknown, not zero.
+	if (!m_lastAbsolute && m_scanTaken) m_gap = true;
 	if (m_lastAbsolute) m_accumulated = m_accumulated + m_correction.correctIncrement(odometry.odometry - *m_lastAbsolute);
 	m_lastAbsolute = odometry.odometry;
 }
@@ -32,6 +36,7 @@ TOdometryIncrement COdometryTracker::takeIncrement()
 	const TOdometryIncrement out = pendingIncrement();
 	m_accumulated = mrpt::poses::CPose2D();
 	m_gap = false;
+	m_scanTaken = true;
 	return out;
 }
 

@@ -6,7 +6,9 @@
  * A missing increment (a "ODOMETRY_GAP" comment written by our CARMEN
  * importer, or a CObservationOdometry chain that restarts) is reported as
  * unknown motion, never silently as zero motion; so is every increment of a
- * log that has no odometry at all (laser-only recordings). */
+ * log that has no odometry at all (laser-only recordings), and the interval
+ * in which the first absolute reading arrives after a scan (odometry that
+ * starts late: that reading is an origin, the motion before it unknown). */
 #pragma once
 
 #include <hslam/calib/COdometryCorrection.h>
@@ -59,6 +61,7 @@ class COdometryTracker
 	std::optional<mrpt::poses::CPose2D> m_lastAbsolute;
 	bool m_gap = false;
 	bool m_anyOdometry = false;  //!< false until the first odometry reading: motion unknown
+	bool m_scanTaken = false;  //!< takeIncrement() was called (a scan came) at least once
 };
 
 }  // namespace hslam::slam
