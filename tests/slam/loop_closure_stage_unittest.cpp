@@ -77,13 +77,15 @@ mrpt::poses::CPose2D truthAt(const common::TTrajectory2D& truth, double t_s)
 
 TEST(LoopClosureStage, RecoversADriftedLoop)
 {
-	auto pipeline = runStage("corridor", "odometry");
-	const double online = ate("corridor", pipeline->trajectory());
-	const double corrected = ate("corridor", pipeline->finalTrajectory());
-	std::cout << "corridor, dead reckoning: ATE " << online << " m -> " << corrected << " m\n";
+	// dead reckoning around the people-crossing room: the odometry drifts,
+	// the room's corners and furniture are unique places
+	auto pipeline = runStage("people-crossing", "odometry");
+	const double online = ate("people-crossing", pipeline->trajectory());
+	const double corrected = ate("people-crossing", pipeline->finalTrajectory());
+	std::cout << "people-crossing, dead reckoning: ATE " << online << " m -> " << corrected << " m\n";
 	ASSERT_TRUE(pipeline->loopClosureStage()->optimized());
-	EXPECT_GT(online, 0.6);  // measured 0.83
-	EXPECT_LT(corrected, 0.15);  // measured 0.074
+	EXPECT_GT(online, 0.5);  // measured 0.74
+	EXPECT_LT(corrected, 0.15);  // measured 0.104
 }
 
 /** Accepted closures of `pipeline` (run on sample `name`), each checked
@@ -105,6 +107,23 @@ size_t checkAcceptedClosures(const std::string& name, const slam::CMappingPipeli
 		EXPECT_LT(std::abs(mrpt::RAD2DEG(err.phi())), maxErr_deg) << name;
 	}
 	return accepted;
+}
+
+TEST(LoopClosureStage, DriftedCorridorIsLeftOpenRatherThanClosedAlongItsAxis)
+{
+	// Dead reckoning along the straight corridor: every revisit scores
+	// within 0.75 of its best at other places along the axis (second / best
+	// 0.95-0.99), so the uniqueness test refuses them all. With the test at
+	// 0.9 seven were accepted and ATE fell to 0.05 m, but the same setting
+	// accepted 14 closures 0.8-6.4 m wrong on the three-lap ring
+	// (sim-floor-laps.ini, ATE 0.105 -> 1.36 m): missing is preferred.
+	auto pipeline = runStage("corridor", "odometry");
+	const double online = ate("corridor", pipeline->trajectory());
+	const double corrected = ate("corridor", pipeline->finalTrajectory());
+	std::cout << "corridor, dead reckoning: ATE " << online << " m -> " << corrected << " m\n";
+	EXPECT_GT(online, 0.6);  // measured 0.83
+	EXPECT_LT(corrected, online + 0.005);
+	checkAcceptedClosures("corridor", *pipeline, 0.2, 2.0);
 }
 
 TEST(LoopClosureStage, KeepsAGoodFrontEndAndItsClosuresAreTrue)
@@ -201,19 +220,19 @@ TEST(LoopClosureStage, RingDrivenThreeTimesIsClosed)
 
 TEST(LoopClosureStage, RerenderedMapAgreesWithTheTruthAtLeastAsWellAsTheOnlineMap)
 {
-	auto pipeline = runStage("corridor", "odometry");
+	auto pipeline = runStage("people-crossing", "odometry");
 	const maps::CTiledOccupancyGrid online = pipeline->grid();
 	pipeline->finish();
 	ASSERT_TRUE(pipeline->mapRerendered());
 	// The reference: the same scans inserted at the true poses (first pose aligned to the estimate's).
-	const auto truth = common::readTumFile(sample("corridor") + "/ground_truth.tum");
+	const auto truth = common::readTumFile(sample("people-crossing") + "/ground_truth.tum");
 	const auto& est = pipeline->trajectory();
 	const mrpt::poses::CPose2D align = mrpt::poses::CPose2D(est.front().pose) - truthAt(truth, est.front().t_s);
 	maps::CTiledOccupancyGrid reference(pipeline->grid().options());
 	maps::CLaserGridInserter inserter(
 		common::loadedOptions<maps::CLaserGridInserter::TOptions>(
 			common::loadConfigWithOverrides(slam::testing::kDefaultIni, {}), "laser_model"));
-	io::CRawlogReader reader(sample("corridor") + "/sim.rawlog");
+	io::CRawlogReader reader(sample("people-crossing") + "/sim.rawlog");
 	for (io::TRawlogEntry e; reader.next(e);)
 		if (auto scan = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(e.observation))
 			inserter.insert(reference, align + truthAt(truth, mrpt::Clock::toDouble(scan->timestamp)), *scan);

@@ -1,8 +1,10 @@
 #include <hslam/graph/CGraphBackend.h>
+#include <hslam/graph/dijkstra_projection.h>
 
 #include <Eigen/Dense>
 #include <algorithm>
 #include <chrono>
+#include <memory>
 
 namespace hslam::graph
 {
@@ -13,16 +15,6 @@ double msSince(std::chrono::steady_clock::time_point t0)
 	return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
-/** Jacobians of a (+) d with respect to a and to d (world frame). */
-void compositionJacobians(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& d, Eigen::Matrix3d& Ja,
-						  Eigen::Matrix3d& Jd)
-{
-	const double c = std::cos(a.phi), s = std::sin(a.phi);
-	Ja = Eigen::Matrix3d::Identity();
-	Ja(0, 2) = -s * d.x - c * d.y, Ja(1, 2) = c * d.x - s * d.y;
-	Jd = Eigen::Matrix3d::Identity();
-	Jd(0, 0) = c, Jd(0, 1) = -s, Jd(1, 0) = s, Jd(1, 1) = c;
-}
 }  // namespace
 
 CGraphBackend::CGraphBackend(const TGraphBackendOptions& options, const TLoopClosureOptions& loopOptions)
@@ -35,7 +27,6 @@ size_t CGraphBackend::addNodeAndSequentialEdge(const TKeyframe& kf)
 	if (m_graph.nodeCount() == 0)
 	{
 		m_frontendPoses.push_back(kf.pose);
-		m_chainCov.push_back(Eigen::Matrix3d::Zero());
 		return m_graph.addNode(kf.id, kf.pose, kf.group);
 	}
 	const size_t prev = m_graph.nodeCount() - 1;
@@ -59,9 +50,6 @@ size_t CGraphBackend::addNodeAndSequentialEdge(const TKeyframe& kf)
 	e.from = prev, e.to = node, e.relative = rel, e.information = cov.inverse();
 	e.kind = kf.after_gap ? EEdgeKind::weak : EEdgeKind::sequential;
 	m_graph.addEdge(e);
-	Eigen::Matrix3d Ja, Jd;
-	compositionJacobians(prevPose, rel, Ja, Jd);
-	m_chainCov.push_back(Ja * m_chainCov[prev] * Ja.transpose() + Jd * cov * Jd.transpose());
 	m_frontendPoses.push_back(kf.pose);
 	return node;
 }
@@ -76,7 +64,7 @@ TKeyframeResult CGraphBackend::addKeyframe(const TKeyframe& kf)
 	if (m_options.detect_loops)
 	{
 		const auto td = std::chrono::steady_clock::now();
-		result.closures = m_detector.detect(result.node, m_graph, m_chainCov);
+		result.closures = m_detector.detect(result.node, m_graph, relativeCovariances(result.node));
 		m_timing.detect_ms += msSince(td);
 		m_timing.candidates_tested += result.closures.size();
 		released = confirmClosures(result.closures);
@@ -107,6 +95,17 @@ TKeyframeResult CGraphBackend::addKeyframe(const TKeyframe& kf)
 	return result;
 }
 
+CLoopClosureDetector::TRelativeCovariance CGraphBackend::relativeCovariances(size_t query) const
+{
+	// computed on the first question only: most keyframes are not queried
+	auto fromQuery = std::make_shared<std::vector<std::optional<Eigen::Matrix3d>>>();
+	return [this, fromQuery, query](size_t anchor) -> std::optional<Eigen::Matrix3d> {
+		if (fromQuery->empty()) *fromQuery = dijkstraProjection(m_graph, query);
+		if (!(*fromQuery)[anchor]) return std::nullopt;
+		return swapFixedEnd(m_graph.nodes()[query].pose, m_graph.nodes()[anchor].pose, *(*fromQuery)[anchor]);
+	};
+}
+
 void CGraphBackend::addClosures(std::vector<TLoopClosure>& tested)
 {
 	for (auto& c : tested)
@@ -125,12 +124,6 @@ void CGraphBackend::addLoopEdge(TLoopClosure& c)
 	e.information = c.covariance.inverse();
 	c.edge = static_cast<long>(m_graph.addEdge(e));
 	++m_timing.closures_accepted;
-	// the closure may be a tighter path to the anchor than the chain
-	Eigen::Matrix3d Ja, Jd;
-	compositionJacobians(c.anchor_pose, c.relative, Ja, Jd);
-	const Eigen::Matrix3d viaClosure =
-		Ja * m_chainCov[c.anchor_node] * Ja.transpose() + Jd * c.covariance * Jd.transpose();
-	if (viaClosure.trace() < m_chainCov[c.query_node].trace()) m_chainCov[c.query_node] = viaClosure;
 }
 
 void CGraphBackend::markDroppedClosures(const TOptimizationReport& report)

@@ -51,17 +51,6 @@ TPointCloud2D thinnedPoints(const std::vector<TSubmapView>& views, double cell_m
 }
 }  // namespace
 
-Eigen::Matrix3d relativeChainCovariance(const mrpt::math::TPose2D& a, const Eigen::Matrix3d& covA,
-										const mrpt::math::TPose2D& i, const Eigen::Matrix3d& covI, double floor)
-{
-	Eigen::Matrix3d J = Eigen::Matrix3d::Identity();
-	J(0, 2) = -(i.y - a.y), J(1, 2) = i.x - a.x;
-	const Eigen::Matrix3d diff = covI - J * covA * J.transpose();
-	Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(0.5 * (diff + diff.transpose()));
-	const Eigen::Vector3d ev = es.eigenvalues().cwiseMax(floor);
-	return es.eigenvectors() * ev.asDiagonal() * es.eigenvectors().transpose();
-}
-
 CLoopClosureDetector::CLoopClosureDetector(const TOptions& options) : m_options(options) {}
 CLoopClosureDetector::~CLoopClosureDetector() = default;
 
@@ -105,7 +94,7 @@ const CLoopClosureDetector::TSubmapField& CLoopClosureDetector::fieldOf(size_t s
 }
 
 std::vector<CLoopClosureDetector::TCandidate> CLoopClosureDetector::candidates(
-	size_t node, const CPoseGraph& graph, const std::vector<Eigen::Matrix3d>& chainCovariance) const
+	size_t node, const CPoseGraph& graph, const TRelativeCovariance& relativeCovariance) const
 {
 	const auto& query = graph.nodes()[node].pose;
 	std::vector<TCandidate> out;
@@ -114,10 +103,11 @@ std::vector<CLoopClosureDetector::TCandidate> CLoopClosureDetector::candidates(
 		const auto& sm = m_submaps[s];
 		if (sm.last_node + static_cast<size_t>(m_options.min_separation_keyframes) > node) continue;
 		const auto& anchor = graph.nodes()[sm.anchor_node].pose;
+		const auto relative = relativeCovariance(sm.anchor_node);
+		if (!relative) continue;
 		TCandidate c;
 		c.submap = s;
-		c.relativeCovariance =
-			relativeChainCovariance(anchor, chainCovariance[sm.anchor_node], query, chainCovariance[node]);
+		c.relativeCovariance = *relative;
 		const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> xy(c.relativeCovariance.topLeftCorner<2, 2>());
 		c.window.xy_m = std::clamp(m_options.window_sigmas * std::sqrt(xy.eigenvalues().maxCoeff()),
 								   m_options.min_window_xy_m, m_options.max_window_xy_m);
@@ -133,11 +123,11 @@ std::vector<CLoopClosureDetector::TCandidate> CLoopClosureDetector::candidates(
 }
 
 std::vector<TLoopClosure> CLoopClosureDetector::detect(size_t node, const CPoseGraph& graph,
-													   const std::vector<Eigen::Matrix3d>& chainCovariance)
+													   const TRelativeCovariance& relativeCovariance)
 {
 	std::vector<TLoopClosure> out;
 	if (node != m_queryNode || node % static_cast<size_t>(m_options.detect_every_n_keyframes) != 0) return out;
-	for (const auto& c : candidates(node, graph, chainCovariance)) out.push_back(verify(c, node, graph));
+	for (const auto& c : candidates(node, graph, relativeCovariance)) out.push_back(verify(c, node, graph));
 	return out;
 }
 

@@ -72,7 +72,7 @@ bool CLoopClosureDetector::checkConsistency(const TCandidate& c, TLoopClosure& o
 							mrpt::math::wrapToPi(matched.phi - out.query_pose_estimate.phi));
 	const Eigen::Matrix3d S = c.relativeCovariance + toWorld(out.covariance, out.anchor_pose.phi);
 	out.consistency_chi2 = d.dot(S.ldlt().solve(d));
-	if (out.consistency_chi2 > m_options.consistency_chi2) return reject(out, "inconsistent with odometry chain");
+	if (out.consistency_chi2 > m_options.consistency_chi2) return reject(out, "inconsistent with the graph");
 	return true;
 }
 

@@ -11,9 +11,10 @@
  * anchors (no matching), at most max_candidates matches, and optimisation only
  * on closures.
  *
- * The chain covariance of every node (world frame, propagated along the
- * sequential edges; replaced by the closure's when that is tighter) gives the
- * relative uncertainty that sizes the search window and gates consistency. */
+ * The relative uncertainty of the current keyframe with respect to each
+ * candidate anchor, which sizes the search window and gates consistency,
+ * comes from the Dijkstra projection over the whole graph, loop edges
+ * included (dijkstra_projection.h), computed once per queried keyframe. */
 #pragma once
 
 #include <hslam/graph/CLoopClosureDetector.h>
@@ -90,11 +91,11 @@ class CGraphBackend
 	/** Every tested closure so far; status updated if the optimiser dropped it. */
 	const std::vector<TLoopClosure>& closures() const { return m_closures; }
 	const std::vector<TSubmap>& submaps() const { return m_detector.submaps(); }
-	const std::vector<Eigen::Matrix3d>& chainCovariances() const { return m_chainCov; }
 	const TBackendTiming& timing() const { return m_timing; }
 
    private:
 	size_t addNodeAndSequentialEdge(const TKeyframe& keyframe);
+	CLoopClosureDetector::TRelativeCovariance relativeCovariances(size_t query) const;
 	void addClosures(std::vector<TLoopClosure>& tested);
 	void addLoopEdge(TLoopClosure& c);
 	std::vector<size_t> confirmClosures(std::vector<TLoopClosure>& tested);
@@ -104,7 +105,6 @@ class CGraphBackend
 	TGraphBackendOptions m_options;
 	CPoseGraph m_graph;
 	CLoopClosureDetector m_detector;
-	std::vector<Eigen::Matrix3d> m_chainCov;
 	std::vector<mrpt::math::TPose2D> m_frontendPoses;
 	std::vector<TLoopClosure> m_closures;
 	std::vector<size_t> m_recentVerified;  //!< m_closures indices: passed verification in the confirmation window

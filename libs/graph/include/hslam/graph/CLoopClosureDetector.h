@@ -8,8 +8,9 @@
  * Candidates for the current keyframe: finished submaps not among the recent
  * ones whose anchor lies within the overlap distance plus the search window of
  * the current estimate. The window is `window_sigmas` times the relative
- * uncertainty of the current pose with respect to the anchor (from the
- * sequential chain: small after a short loop, large after a long loop or an
+ * uncertainty of the current pose with respect to the anchor (given by the
+ * caller: the back-end's Dijkstra projection through the graph, small after
+ * a short loop or near a closed one, large after a long unclosed loop or an
  * odometry gap, so a large drift is still searched), clamped to the options.
  *
  * Verification (every test must pass; a rejected candidate keeps the reason
@@ -23,8 +24,7 @@
  *     reach it through space the submap's own beams crossed (a wall is not
  *     seen from behind);
  *  4. consistency: the correction the closure implies for the current pose is
- *     within the chi2 gate of the relative covariance of the odometry chain
- *     plus the closure's covariance;
+ *     within the chi2 gate of that relative covariance plus the closure's;
  *  5. uniqueness: no other pose in the window (outside a small exclusion)
  *     reaches ambiguity_ratio x the best score (repeated rooms, corridors).
  * Then the back-end (CGraphBackend) asks for a second opinion: a closure that
@@ -40,7 +40,9 @@
 #include <hslam/graph/CPoseGraph.h>
 #include <hslam/graph/free_space_check.h>
 
+#include <functional>
 #include <list>
+#include <optional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -61,7 +63,7 @@ struct TLoopClosureOptions
 	double min_score = 0.55;  //!< mean likelihood of the query points
 	double min_hit_fraction = 0.6;  //!< fraction of query points on the submap (overlap)
 	int min_query_points = 50;
-	double ambiguity_ratio = 0.85;  //!< a second peak at this fraction of the best rejects the closure
+	double ambiguity_ratio = 0.75;  //!< a second peak at this fraction of the best rejects the closure
 	double ambiguity_xy_m = 0.5, ambiguity_yaw_rad = mrpt::DEG2RAD(10.0);  //!< what counts as "another" peak
 	double min_icp_goodness = 0.7;
 	double icp_max_shift_m = 0.15, icp_max_shift_yaw_rad = mrpt::DEG2RAD(2.0);
@@ -148,11 +150,14 @@ class CLoopClosureDetector
 	 * closes a submap every submap_keyframes nodes (poses taken from `graph`). */
 	void addKeyframe(size_t node, const TPointCloud2D& points, const CPoseGraph& graph);
 
+	/** Covariance (world frame) of the query node's pose with the given
+	 * anchor node held fixed; no value when the two are not connected. */
+	using TRelativeCovariance = std::function<std::optional<Eigen::Matrix3d>(size_t anchorNode)>;
+
 	/** Candidates for `node` (its points given to addKeyframe) and their
-	 * verification. `chainCovariance[i]` is node i's world-frame covariance
-	 * propagated along the sequential edges. */
-	std::vector<TLoopClosure> detect(size_t node, const CPoseGraph& graph,
-									 const std::vector<Eigen::Matrix3d>& chainCovariance);
+	 * verification; `relativeCovariance` sizes each search window and gates
+	 * the correction a closure implies. */
+	std::vector<TLoopClosure> detect(size_t node, const CPoseGraph& graph, const TRelativeCovariance& relativeCovariance);
 
 	const std::vector<TSubmap>& submaps() const { return m_submaps; }
 	const TOptions& options() const { return m_options; }
@@ -161,7 +166,7 @@ class CLoopClosureDetector
 	struct TCandidate;
 	struct TSubmapField;
 	std::vector<TCandidate> candidates(size_t node, const CPoseGraph& graph,
-									   const std::vector<Eigen::Matrix3d>& chainCovariance) const;
+									   const TRelativeCovariance& relativeCovariance) const;
 	TLoopClosure verify(const TCandidate& c, size_t node, const CPoseGraph& graph);
 	bool matchBest(const CCorrelativeScanMatcher& m, const TCandidate& c, TLoopClosure& out,
 				   TCorrelativeMatch& best) const;
@@ -185,12 +190,5 @@ class CLoopClosureDetector
  * correction: b's measured pose against b's query pose moved by the
  * world-frame correction a implies at its own query, within xy_m / yaw_rad. */
 bool closuresAgree(const TLoopClosure& a, const TLoopClosure& b, const CPoseGraph& graph, double xy_m, double yaw_rad);
-
-/** Covariance of node i relative to node a, in the world frame, from the
- * chain covariances: Sigma_i - J Sigma_a J^T (J = d(a (+) r)/da), eigenvalues
- * floored at `floor`. */
-Eigen::Matrix3d relativeChainCovariance(const mrpt::math::TPose2D& a, const Eigen::Matrix3d& covA,
-										const mrpt::math::TPose2D& i, const Eigen::Matrix3d& covI,
-										double floor = 1e-8);
 
 }  // namespace hslam::graph
