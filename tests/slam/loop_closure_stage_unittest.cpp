@@ -133,7 +133,9 @@ TEST(LoopClosureStage, KeepsAGoodFrontEndAndItsClosuresAreTrue)
 	const double corrected = ate("lab", pipeline->finalTrajectory());
 	std::cout << "lab, default front-end: ATE " << online << " m -> " << corrected << " m\n";
 	EXPECT_LT(corrected, online + 0.005);  // measured 0.014 -> 0.010
-	EXPECT_GT(checkAcceptedClosures("lab", *pipeline, 0.06, 2.0), 40u);  // measured 90
+	// measured 36; 90 with every candidate tested: the information gate
+	// skips revisits the graph already knows as well as a closure would
+	EXPECT_GT(checkAcceptedClosures("lab", *pipeline, 0.06, 2.0), 20u);
 }
 
 /** Places that look alike from one scan: the ring corridor's outer corner and

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <hslam/graph/adaptive_voxel_filter.h>
+
 #include "branch_and_bound.h"
 
 namespace hslam::graph
@@ -111,7 +113,10 @@ TCorrelativeMatch CCorrelativeScanMatcher::match(const TPointCloud2D& rawQuery, 
 	const double step = angularStep(res, farthestRange(query));
 	const int halfRotations = static_cast<int>(std::ceil(window.yaw_rad / step));
 	const int windowCells = static_cast<int>(std::ceil(window.xy_m / res));
-	const auto rotations = rotateQuery(m_grid, query, guess, halfRotations, step);
+	const size_t thinTo = exclude ? 0 : static_cast<size_t>(m_options.search_min_points);
+	const auto searchQuery = adaptiveVoxelFilter(query, thinTo, m_options.search_max_voxel_m);
+	result.search_points = searchQuery.size();
+	const auto rotations = rotateQuery(m_grid, searchQuery, guess, halfRotations, step);
 	result.rotations = rotations.size();
 	result.angle_step_rad = step;
 	std::function<bool(int, int, int)> excluded;

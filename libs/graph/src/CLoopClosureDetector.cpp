@@ -51,6 +51,14 @@ TPointCloud2D thinnedPoints(const std::vector<TSubmapView>& views, double cell_m
 }
 }  // namespace
 
+double closureInformationGain(const Eigen::Matrix3d& relative, double closureXyStd_m, double closureYawStd_rad)
+{
+	const Eigen::Vector3d closureVar(closureXyStd_m * closureXyStd_m, closureXyStd_m * closureXyStd_m,
+									 closureYawStd_rad * closureYawStd_rad);
+	const Eigen::Matrix3d sum = 0.5 * (relative + relative.transpose()) + Eigen::Matrix3d(closureVar.asDiagonal());
+	return 0.5 * std::log(sum.determinant() / closureVar.prod());
+}
+
 CLoopClosureDetector::CLoopClosureDetector(const TOptions& options) : m_options(options) {}
 CLoopClosureDetector::~CLoopClosureDetector() = default;
 
@@ -115,6 +123,13 @@ std::vector<CLoopClosureDetector::TCandidate> CLoopClosureDetector::candidates(
 									  m_options.min_window_yaw_rad, m_options.max_window_yaw_rad);
 		c.distance_m = std::hypot(query.x - anchor.x, query.y - anchor.y);
 		if (c.distance_m > m_options.overlap_distance_m + c.window.xy_m) continue;
+		c.information_gain_nats = closureInformationGain(c.relativeCovariance, m_options.closure_xy_std_m,
+														 m_options.closure_yaw_std_rad);
+		if (c.information_gain_nats < m_options.min_information_gain_nats)
+		{
+			++m_skippedLittleInformation;
+			continue;
+		}
 		out.push_back(c);
 	}
 	std::sort(out.begin(), out.end(), [](const TCandidate& a, const TCandidate& b) { return a.distance_m < b.distance_m; });

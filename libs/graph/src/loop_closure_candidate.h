@@ -13,6 +13,7 @@ struct CLoopClosureDetector::TCandidate
 	double distance_m = 0;  //!< current pose to the submap's anchor
 	Eigen::Matrix3d relativeCovariance = Eigen::Matrix3d::Identity();  //!< current vs anchor, world frame
 	TSearchWindow window;
+	double information_gain_nats = 0;  //!< closureInformationGain of relativeCovariance
 };
 
 /** A submap's likelihood field, its points as an MRPT map for the ICP check

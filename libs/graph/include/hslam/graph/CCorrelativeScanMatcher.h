@@ -41,6 +41,12 @@ struct TCorrelativeMatcherOptions
 	double max_query_range_m = 0;  //!< query points farther from the robot are dropped (0 = keep all)
 	double min_score = 0.3;  //!< no match below this mean likelihood (also the initial B&B bound)
 	double covariance_span_cells = 4;  //!< half-width (cells / angle steps) of the score surface for the covariance
+	/** The search for the best pose (not its refinement, not the covariance,
+	 * not a search with an exclusion) uses the query thinned by
+	 * adaptiveVoxelFilter to at least this many points (0 = all points),
+	 * cells up to search_max_voxel_m. */
+	int search_min_points = 100;
+	double search_max_voxel_m = 0.9;
 
 	/** The keys of the field and query (no window, no threshold). */
 	template <class V>
@@ -51,6 +57,8 @@ struct TCorrelativeMatcherOptions
 		v.integer("levels", levels, 1, 12);
 		v.real("max_query_range_m", max_query_range_m, 0.0, 100.0);
 		v.real("covariance_span_cells", covariance_span_cells, 1.0, 20.0);
+		v.integer("search_min_points", search_min_points, 0, 100000);
+		v.real("search_max_voxel_m", search_max_voxel_m, 0.01, 10.0);
 	}
 	template <class V>
 	void visit(V& v)
@@ -86,6 +94,7 @@ struct TCorrelativeMatch
 	double hit_fraction = 0;  //!< fraction of query points within ~1.2 kernel sigma of a reference point
 	Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();  //!< of `pose` (x, y, yaw), m^2 / rad^2
 	size_t query_points = 0;  //!< points used after range filtering
+	size_t search_points = 0;  //!< of those, scored by branch-and-bound (after thinning)
 	size_t rotations = 0;  //!< rotations in the window
 	size_t nodes_scored = 0;  //!< B&B nodes scored (cost measure)
 	double angle_step_rad = 0;  //!< rotation step of the search (for covarianceOf)
@@ -137,7 +146,14 @@ class CCorrelativeScanMatcher
 	/** Best pose within the options' window around `guess`. */
 	TCorrelativeMatch match(const TPointCloud2D& query, const mrpt::math::TPose2D& guess) const;
 	/** Best pose within `window` around `guess`, optionally outside `exclude`
-	 * and only if its score reaches `minScore` (< 0: the options' min_score). */
+	 * and only if its score reaches `minScore` (< 0: the options' min_score).
+	 * Without `exclude`, branch-and-bound scores the query thinned to
+	 * search_min_points (each node scores every point: the search's cost is
+	 * linear in them) and the winner is refined and scored with every point.
+	 * With `exclude` (a second peak, the uniqueness test) every point is
+	 * searched: a thinned query tells similar places apart less well (a
+	 * thinned second search let two closures 2 m wrong through on the
+	 * simulated laser-only sample). */
 	TCorrelativeMatch match(const TPointCloud2D& query, const mrpt::math::TPose2D& guess, const TSearchWindow& window,
 							const TSearchExclusion* exclude = nullptr, double minScore = -1,
 							EMatchOutput output = EMatchOutput::pose_and_covariance) const;

@@ -91,6 +91,7 @@ class CGraphBackend
 	/** Every tested closure so far; status updated if the optimiser dropped it. */
 	const std::vector<TLoopClosure>& closures() const { return m_closures; }
 	const std::vector<TSubmap>& submaps() const { return m_detector.submaps(); }
+	const CLoopClosureDetector& detector() const { return m_detector; }
 	const TBackendTiming& timing() const { return m_timing; }
 
    private:

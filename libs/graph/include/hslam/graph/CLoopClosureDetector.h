@@ -12,6 +12,9 @@
  * caller: the back-end's Dijkstra projection through the graph, small after
  * a short loop or near a closed one, large after a long unclosed loop or an
  * odometry gap, so a large drift is still searched), clamped to the options.
+ * A candidate whose closure would tell the graph less than
+ * min_information_gain_nats (closureInformationGain: the graph already knows
+ * the relative pose about as well as a closure would) is not tested.
  *
  * Verification (every test must pass; a rejected candidate keeps the reason
  * of the first test it failed; the tests run cheapest first):
@@ -72,6 +75,10 @@ struct TLoopClosureOptions
 	int max_cached_fields = 16;  //!< likelihood fields kept in memory
 	int confirm_within_keyframes = 10;  //!< a closure waits this long for a second that agrees (0: none needed)
 	double confirm_xy_m = 0.3, confirm_yaw_rad = mrpt::DEG2RAD(3.0);  //!< agreement of two closures' corrections
+	/** A candidate is tested only if a closure of the typical accuracy below
+	 * would tell the graph at least this much (nats; 0 tests every one). */
+	double min_information_gain_nats = 1.0;
+	double closure_xy_std_m = 0.05, closure_yaw_std_rad = mrpt::DEG2RAD(1.0);  //!< typical closure accuracy
 
 	template <class V>
 	void visit(V& v)
@@ -102,6 +109,9 @@ struct TLoopClosureOptions
 		v.integer("confirm_within_keyframes", confirm_within_keyframes, 0, 1000);
 		v.real("confirm_xy_m", confirm_xy_m, 0.0, 100.0);
 		v.degrees("confirm_yaw_deg", confirm_yaw_rad, 0.0, 180.0);
+		v.real("min_information_gain_nats", min_information_gain_nats, 0.0, 100.0);
+		v.real("closure_xy_std_m", closure_xy_std_m, 1e-4, 10.0);
+		v.degrees("closure_yaw_std_deg", closure_yaw_std_rad, 0.01, 90.0);
 	}
 };
 
@@ -124,6 +134,8 @@ struct TLoopClosure
 	mrpt::math::TPose2D query_pose_matched;  //!< world pose the closure implies (anchor (+) relative)
 	mrpt::math::TPose2D anchor_pose;  //!< world pose of the anchor when tested
 	double window_xy_m = 0, window_yaw_rad = 0;
+	double prior_xy_std_m = 0, prior_yaw_std_rad = 0;  //!< relative std of query vs anchor before the test (largest xy axis)
+	double information_gain_nats = 0;  //!< what a typical closure would tell the graph (closureInformationGain)
 	double score = 0, hit_fraction = 0, second_score = 0;
 	double icp_goodness = 0, icp_shift_m = 0, icp_shift_yaw_rad = 0;
 	double consistency_chi2 = 0;
@@ -161,6 +173,9 @@ class CLoopClosureDetector
 
 	const std::vector<TSubmap>& submaps() const { return m_submaps; }
 	const TOptions& options() const { return m_options; }
+	/** Candidates in range that were not tested: a closure would have told
+	 * the graph less than min_information_gain_nats. */
+	size_t skippedLittleInformation() const { return m_skippedLittleInformation; }
 
    private:
 	struct TCandidate;
@@ -183,8 +198,18 @@ class CLoopClosureDetector
 	std::vector<std::pair<size_t, TPointCloud2D>> m_pending;  //!< nodes of the open submap
 	TPointCloud2D m_queryPoints;  //!< points of the last added keyframe
 	size_t m_queryNode = 0;
+	mutable size_t m_skippedLittleInformation = 0;
 	std::list<std::pair<size_t, std::unique_ptr<TSubmapField>>> m_fieldCache;  //!< most recent first
 };
+
+/** Mutual information (nats) between the graph's relative pose of a query
+ * and an anchor (covariance `relative`) and a closure measuring it with the
+ * diagonal covariance of the given standard deviations:
+ * 0.5 ln(det(relative + closure) / det(closure)) (Ila, Porta and
+ * Andrade-Cetto, "Information-based compact pose SLAM", T-RO 2010, eq. 17).
+ * Near 0 when the graph already knows the relative pose as well as a closure
+ * would tell it (just after a closure of the same place). */
+double closureInformationGain(const Eigen::Matrix3d& relative, double closureXyStd_m, double closureYawStd_rad);
 
 /** Whether two verified closures ask `graph` (its current poses) for the same
  * correction: b's measured pose against b's query pose moved by the
