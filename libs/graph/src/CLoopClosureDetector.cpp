@@ -1,12 +1,11 @@
-#include <hslam/common/cell_key.h>
 #include <hslam/graph/CLoopClosureDetector.h>
+#include <hslam/graph/adaptive_voxel_filter.h>
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/poses/CPose2D.h>
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
-#include <unordered_set>
 
 #include "loop_closure_candidate.h"
 
@@ -39,15 +38,9 @@ std::vector<TSubmapView> submapViews(const std::vector<std::pair<size_t, TPointC
 /** The views' points, one per cell of `cell_m`. */
 TPointCloud2D thinnedPoints(const std::vector<TSubmapView>& views, double cell_m)
 {
-	TPointCloud2D out;
-	std::unordered_set<int64_t> used;
-	for (const auto& v : views)
-		for (const auto& p : v.points)
-		{
-			const auto key = common::cellKey(static_cast<int>(std::floor(p.x / cell_m)), static_cast<int>(std::floor(p.y / cell_m)));
-			if (used.insert(key).second) out.push_back(p);
-		}
-	return out;
+	TPointCloud2D all;
+	for (const auto& v : views) all.insert(all.end(), v.points.begin(), v.points.end());
+	return voxelFilter(all, cell_m);
 }
 }  // namespace
 
