@@ -68,3 +68,36 @@ TEST(MotionPrior, VelocityNeverExceedsTheRobotsLimits)
 	EXPECT_NEAR(p.delta.norm(), 1.5, 1e-9);
 	EXPECT_NEAR(p.delta.phi(), 90 * kDeg, 1e-9);
 }
+
+TEST(MotionPrior, UnknownMotionBeforeTheFirstOdometryIsNoStall)
+{
+	// aces cut at entry 6: no odometry reading before the second scan, which
+	// the scans saw turn 44 deg; the next interval has odometry again.
+	CMotionPrior prior;
+	TOdometryIncrement unknown;
+	unknown.known = false;
+	prior.prior(unknown, 22.74);
+	prior.observePose(CPose2D(0, 0, 0), 22.74);
+	EXPECT_EQ(prior.prior(unknown, 23.86).reason, "gap");
+	prior.observePose(CPose2D(0.14, -0.11, -43.7 * kDeg), 23.86);
+	// the unknown interval is not "odometry read zero while the robot turned"
+	const TMotionPrior p = prior.prior(odometry(1.02, -0.05, 6.5 * kDeg), 25.41);
+	EXPECT_EQ(p.source, TMotionPrior::ESource::odometry);
+	EXPECT_EQ(p.reason, "");
+}
+
+TEST(MotionPrior, StallEvidenceOlderThanTheWindowIsForgotten)
+{
+	CMotionPrior prior;  // disagreement_window_s = 3
+	prior.prior(odometry(0.001, 0, 0), 0.0);
+	prior.observePose(CPose2D(0, 0, 0), 0.0);
+	prior.prior(odometry(0.001, 0, 0), 1.0);
+	prior.observePose(CPose2D(0.5, 0, 0), 1.0);  // the scans moved 0.5 m, odometry 1 mm
+	EXPECT_EQ(prior.prior(odometry(0.001, 0, 0), 2.0).reason, "stalled");  // within the window
+	prior.observePose(CPose2D(1.0, 0, 0), 2.0);
+	// the next scan comes 8 s later: the disagreement at 1-2 s is outside
+	// the window ending now, and odometry reports ordinary motion
+	const TMotionPrior p = prior.prior(odometry(0.5, 0, 0.1), 10.0);
+	EXPECT_EQ(p.source, TMotionPrior::ESource::odometry);
+	EXPECT_EQ(p.reason, "");
+}

@@ -43,6 +43,7 @@ TMotionPrior CMotionPrior::prior(const TOdometryIncrement& increment, double t_s
 	const double dt = m_haveScan ? std::clamp(t_s - m_lastScan_s, 0.0, 10.0) : 0.0;
 	m_lastScan_s = t_s, m_haveScan = true;
 	m_lastOdometry = increment.known ? increment.delta : mrpt::poses::CPose2D();
+	m_lastOdometryKnown = increment.known;
 	if (!increment.known)
 	{
 		m_zeroIncrements = 0;
@@ -52,18 +53,19 @@ TMotionPrior CMotionPrior::prior(const TOdometryIncrement& increment, double t_s
 	m_zeroIncrements = zero ? m_zeroIncrements + 1 : 0;
 	if (m_zeroIncrements >= m_options.frozen_min_scans) return constantVelocity(dt, "frozen");
 	if (isJump(increment.delta, dt)) return constantVelocity(dt, "jump");
-	m_stalled = odometryStalled();
+	m_stalled = odometryStalled(t_s);
 	if (m_stalled) return constantVelocity(dt, "stalled");
 	TMotionPrior p;
 	p.delta = increment.delta;
 	return p;
 }
 
-bool CMotionPrior::odometryStalled() const
+bool CMotionPrior::odometryStalled(double t_s) const
 {
 	double odo_m = 0, odo_rad = 0, est_m = 0, est_rad = 0;
 	for (const auto& i : m_recent)
-		odo_m += i.odometry_m, odo_rad += i.odometry_rad, est_m += i.estimate_m, est_rad += i.estimate_rad;
+		if (i.t_s >= t_s - m_options.disagreement_window_s)  // the list is pruned only when the next pose comes
+			odo_m += i.odometry_m, odo_rad += i.odometry_rad, est_m += i.estimate_m, est_rad += i.estimate_rad;
 	const double k = m_options.disagreement_ratio;
 	return (est_m >= m_options.disagreement_min_motion_m && odo_m < k * est_m) ||
 		   (est_rad >= m_options.disagreement_min_rotation_rad && odo_rad < k * est_rad) ||
@@ -95,8 +97,9 @@ void CMotionPrior::observePose(const mrpt::poses::CPose2D& pose, double t_s)
 			m_poseHistory.pop_front();
 		const auto& [base_s, basePose] = m_poseHistory.front();
 		if (m_measuredVelocity_s != t_s && t_s > base_s) m_velocity = possibleVelocity(pose - basePose, t_s - base_s);
-		m_recent.push_back({t_s, m_lastOdometry.norm(), std::abs(m_lastOdometry.phi()), d.norm(),
-							std::abs(mrpt::math::wrapToPi(d.phi()))});
+		if (m_lastOdometryKnown)
+			m_recent.push_back({t_s, m_lastOdometry.norm(), std::abs(m_lastOdometry.phi()), d.norm(),
+								std::abs(mrpt::math::wrapToPi(d.phi()))});
 		while (!m_recent.empty() && m_recent.front().t_s < t_s - m_options.disagreement_window_s) m_recent.pop_front();
 	}
 	m_lastPose = pose, m_lastPose_s = t_s, m_havePose = true;
