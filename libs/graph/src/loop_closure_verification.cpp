@@ -129,15 +129,18 @@ TLoopClosure CLoopClosureDetector::verify(const TCandidate& c, size_t node, cons
 	out.relative = relativePose(out.anchor_pose, out.query_pose_estimate);
 	if (static_cast<int>(m_queryPoints.size()) < m_options.min_query_points)
 		return reject(out, "too few points"), finish();
-	// cheapest tests first (the second search of the uniqueness test costs
-	// as much as the first); a closure must pass all, so the order changes
-	// only which reason a rejected one records
+	// a closure must pass all tests, so their order changes only the cost
+	// and which reason a rejected one records: score, ICP, free side,
+	// uniqueness (a second search), then the consistency gate, the only one
+	// that needs the closure's score-surface covariance
 	const auto& field = fieldOf(c.submap);
 	TCorrelativeMatch best;
 	if (!matchBest(field.matcher, c, out, best) || !refineWithIcp(field, out)) return finish();
+	if (!checkFreeSide(field, out) || !checkUniqueness(field.matcher, c, best, out)) return finish();
+	// the score-surface covariance only for a closure that passed every test
+	// that does not need it (intel: 259 ambiguous candidates no longer pay it)
 	out.covariance = field.matcher.covarianceOf(m_queryPoints, best);
-	if (!checkFreeSide(field, out) || !checkConsistency(c, out) || !checkUniqueness(field.matcher, c, best, out))
-		return finish();
+	if (!checkConsistency(c, out)) return finish();
 	out.accepted = true;
 	out.reason = "accepted";
 	return finish();

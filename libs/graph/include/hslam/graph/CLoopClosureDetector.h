@@ -17,7 +17,8 @@
  * the relative pose about as well as a closure would) is not tested.
  *
  * Verification (every test must pass; a rejected candidate keeps the reason
- * of the first test it failed; the tests run cheapest first):
+ * of the first test it failed; they run in the order 1, 2, 3, 5, 4, so the
+ * score-surface covariance that 4 needs is computed for few candidates):
  *  1. score: the correlative match's mean likelihood >= min_score and hit
  *     fraction >= min_hit_fraction (overlap), with >= min_query_points points;
  *  2. ICP agreement: MRPT CICP from the correlative pose converges with
