@@ -20,7 +20,8 @@ each scan's time); truth poses are taken at the nearest truth stamp within
 --max-dt-s. Standard library only.
 
 Usage: scripts/closure_truth.py RUN_DIR TRUTH.tum [--list-bad] [options]
-Prints key=value lines (closures_accepted=, closures_bad=, worst_xy_m=,
+Prints key=value lines (closures_accepted=, closures_without_truth=,
+closures_bad=, worst_xy_m=,
 worst_yaw_deg=, revisit_passes=, revisit_passes_closed=, revisit_recall=).
 Exit status 2 with a message naming the file on unreadable input.
 """
@@ -91,22 +92,27 @@ def relative(a, b):
 
 
 def closure_errors(closures, scan_truth):
-    """[(query, anchor, xy_m, yaw_deg)] of the accepted closures with truth at both ends."""
-    out = []
-    for c in closures:
+    """[(query, anchor, xy_m, yaw_deg)] of the accepted closures with truth at
+    both ends, and how many accepted closures had none."""
+    out, without_truth = [], 0
+    for line, c in enumerate(closures, 2):
         if c['accepted'] != '1':
             continue
-        q, a = int(c['query_keyframe']), int(c['anchor_keyframe'])
+        try:
+            q, a = int(c['query_keyframe']), int(c['anchor_keyframe'])
+            measured = (float(c['rel_x_m']), float(c['rel_y_m']), math.radians(float(c['rel_yaw_deg'])))
+        except (TypeError, ValueError) as e:
+            raise InputError(f"loop_closures.csv:{line}: {e}")
         if not (0 <= q < len(scan_truth) and 0 <= a < len(scan_truth)):
-            raise InputError(f"loop_closures.csv: keyframe {q} or {a} is not a scan of pose_estimates.csv")
+            raise InputError(f"loop_closures.csv:{line}: keyframe {q} or {a} is not a scan of pose_estimates.csv")
         tq, ta = scan_truth[q], scan_truth[a]
         if tq is None or ta is None:
+            without_truth += 1
             continue
         true_rel = relative(ta, tq)
-        measured = (float(c['rel_x_m']), float(c['rel_y_m']), math.radians(float(c['rel_yaw_deg'])))
         xy = math.hypot(true_rel[0] - measured[0], true_rel[1] - measured[1])
         out.append((q, a, xy, abs(math.degrees(wrap(true_rel[2] - measured[2])))))
-    return out
+    return out, without_truth
 
 
 def revisit_passes(scan_truth, radius_m, min_path_m, segment_m):
@@ -152,12 +158,15 @@ def evaluate(run_dir, truth_path, args):
         scan_truth = [truth.at(float(r['t_s'])) for r in scans]
     except ValueError as e:
         raise InputError(f"{run_dir}/pose_estimates.csv: {e}")
-    errors = closure_errors(closures, scan_truth)
+    errors, without_truth = closure_errors(closures, scan_truth)
+    if without_truth and not errors:
+        raise InputError(f"{truth_path}: no truth pose within {args.max_dt_s} s of any accepted closure's keyframes "
+                         "(another run's truth?)")
     bad = [e for e in errors if e[2] > args.bad_xy_m or e[3] > args.bad_yaw_deg]
     passes = revisit_passes(scan_truth, args.revisit_radius_m, args.revisit_min_path_m, args.revisit_segment_m)
     accepted_queries = {int(c['query_keyframe']) for c in closures if c['accepted'] == '1'}
     closed = sum(1 for run in passes if accepted_queries.intersection(run))
-    return errors, bad, passes, closed
+    return errors, without_truth, bad, passes, closed
 
 
 def main(argv=None):
@@ -173,7 +182,7 @@ def main(argv=None):
     ap.add_argument('--list-bad', action='store_true', help='print each bad closure')
     args = ap.parse_args(argv)
     try:
-        errors, bad, passes, closed = evaluate(args.run_dir, args.truth, args)
+        errors, without_truth, bad, passes, closed = evaluate(args.run_dir, args.truth, args)
     except InputError as e:
         print(f"closure_truth.py: error: {e}", file=sys.stderr)
         return 2
@@ -181,6 +190,7 @@ def main(argv=None):
         for q, a, xy, yaw in bad:
             print(f"bad closure query={q} anchor={a} error_xy_m={xy:.3f} error_yaw_deg={yaw:.2f}")
     print(f"closures_accepted={len(errors)}")
+    print(f"closures_without_truth={without_truth}")
     print(f"closures_bad={len(bad)}")
     print(f"worst_xy_m={max((e[2] for e in errors), default=0):.3f}")
     print(f"worst_yaw_deg={max((e[3] for e in errors), default=0):.2f}")

@@ -57,6 +57,7 @@ class ClosureTruth(unittest.TestCase):
             status, r = run(d)
             self.assertEqual(status, 0)
             self.assertEqual(r["closures_accepted"], "3")
+            self.assertEqual(r["closures_without_truth"], "0")
             self.assertEqual(r["closures_bad"], "2")
             self.assertAlmostEqual(float(r["worst_xy_m"]), 0.25, places=3)
             self.assertAlmostEqual(float(r["worst_yaw_deg"]), 3.0, places=2)
@@ -75,6 +76,26 @@ class ClosureTruth(unittest.TestCase):
             self.assertEqual(status, 2)
             self.assertIn("loop_closures.csv", err.getvalue())
             self.assertIn("rel_yaw_deg", err.getvalue())
+
+    def test_a_truth_of_another_run_is_an_error(self):
+        with tempfile.TemporaryDirectory() as d:
+            write_run(d, ["45,5,1,accepted,0,0,0\n"])
+            with open(os.path.join(d, "truth.tum"), "w") as f:
+                f.write("1000 0 0 0 0 0 0 1\n1001 1 0 0 0 0 0 1\n")
+            err = io.StringIO()
+            with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
+                status = ct.main([d, os.path.join(d, "truth.tum")])
+            self.assertEqual(status, 2)
+            self.assertIn("truth.tum", err.getvalue())
+
+    def test_an_unreadable_number_names_the_line(self):
+        with tempfile.TemporaryDirectory() as d:
+            write_run(d, ["45,5,1,accepted,0,zero,0\n"])
+            err = io.StringIO()
+            with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
+                status = ct.main([d, os.path.join(d, "truth.tum")])
+            self.assertEqual(status, 2)
+            self.assertIn("loop_closures.csv:2", err.getvalue())
 
     def test_a_keyframe_outside_the_run_is_an_error(self):
         with tempfile.TemporaryDirectory() as d:

@@ -95,7 +95,7 @@ const CLoopClosureDetector::TSubmapField& CLoopClosureDetector::fieldOf(size_t s
 }
 
 std::vector<CLoopClosureDetector::TCandidate> CLoopClosureDetector::candidates(
-	size_t node, const CPoseGraph& graph, const TRelativeCovariance& relativeCovariance) const
+	size_t node, const CPoseGraph& graph, const TRelativeCovariance& relativeCovariance)
 {
 	const auto& query = graph.nodes()[node].pose;
 	std::vector<TCandidate> out;
@@ -110,10 +110,12 @@ std::vector<CLoopClosureDetector::TCandidate> CLoopClosureDetector::candidates(
 		c.submap = s;
 		c.relativeCovariance = *relative;
 		const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> xy(c.relativeCovariance.topLeftCorner<2, 2>());
-		c.window.xy_m = std::clamp(m_options.window_sigmas * std::sqrt(xy.eigenvalues().maxCoeff()),
-								   m_options.min_window_xy_m, m_options.max_window_xy_m);
-		c.window.yaw_rad = std::clamp(m_options.window_sigmas * std::sqrt(c.relativeCovariance(2, 2)),
-									  m_options.min_window_yaw_rad, m_options.max_window_yaw_rad);
+		c.xy_std_m = std::sqrt(std::max(0.0, xy.eigenvalues().maxCoeff()));
+		c.yaw_std_rad = std::sqrt(std::max(0.0, c.relativeCovariance(2, 2)));
+		c.window.xy_m =
+			std::clamp(m_options.window_sigmas * c.xy_std_m, m_options.min_window_xy_m, m_options.max_window_xy_m);
+		c.window.yaw_rad = std::clamp(m_options.window_sigmas * c.yaw_std_rad, m_options.min_window_yaw_rad,
+									  m_options.max_window_yaw_rad);
 		c.distance_m = std::hypot(query.x - anchor.x, query.y - anchor.y);
 		if (c.distance_m > m_options.overlap_distance_m + c.window.xy_m) continue;
 		c.information_gain_nats = closureInformationGain(c.relativeCovariance, m_options.closure_xy_std_m,

@@ -12,6 +12,7 @@ struct CLoopClosureDetector::TCandidate
 	size_t submap = 0;
 	double distance_m = 0;  //!< current pose to the submap's anchor
 	Eigen::Matrix3d relativeCovariance = Eigen::Matrix3d::Identity();  //!< current vs anchor, world frame
+	double xy_std_m = 0, yaw_std_rad = 0;  //!< of relativeCovariance: largest xy axis, heading
 	TSearchWindow window;
 	double information_gain_nats = 0;  //!< closureInformationGain of relativeCovariance
 };

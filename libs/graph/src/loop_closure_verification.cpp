@@ -117,9 +117,7 @@ TLoopClosure CLoopClosureDetector::verify(const TCandidate& c, size_t node, cons
 	out.query_pose_estimate = graph.nodes()[node].pose;
 	out.anchor_pose = graph.nodes()[sm.anchor_node].pose;
 	out.window_xy_m = c.window.xy_m, out.window_yaw_rad = c.window.yaw_rad;
-	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> xy(c.relativeCovariance.topLeftCorner<2, 2>());
-	out.prior_xy_std_m = std::sqrt(std::max(0.0, xy.eigenvalues().maxCoeff()));
-	out.prior_yaw_std_rad = std::sqrt(std::max(0.0, c.relativeCovariance(2, 2)));
+	out.prior_xy_std_m = c.xy_std_m, out.prior_yaw_std_rad = c.yaw_std_rad;
 	out.information_gain_nats = c.information_gain_nats;
 	auto finish = [&]() {
 		out.query_pose_matched = composePose(out.anchor_pose, out.relative);

@@ -182,7 +182,7 @@ class CLoopClosureDetector
 	struct TCandidate;
 	struct TSubmapField;
 	std::vector<TCandidate> candidates(size_t node, const CPoseGraph& graph,
-									   const TRelativeCovariance& relativeCovariance) const;
+									   const TRelativeCovariance& relativeCovariance);
 	TLoopClosure verify(const TCandidate& c, size_t node, const CPoseGraph& graph);
 	bool matchBest(const CCorrelativeScanMatcher& m, const TCandidate& c, TLoopClosure& out,
 				   TCorrelativeMatch& best) const;
@@ -199,7 +199,7 @@ class CLoopClosureDetector
 	std::vector<std::pair<size_t, TPointCloud2D>> m_pending;  //!< nodes of the open submap
 	TPointCloud2D m_queryPoints;  //!< points of the last added keyframe
 	size_t m_queryNode = 0;
-	mutable size_t m_skippedLittleInformation = 0;
+	size_t m_skippedLittleInformation = 0;
 	std::list<std::pair<size_t, std::unique_ptr<TSubmapField>>> m_fieldCache;  //!< most recent first
 };
 
