@@ -46,6 +46,14 @@ def run(folder, *extra):
     return status, dict(line.split("=") for line in out.getvalue().split())
 
 
+def run_failing(folder):
+    """(exit status, stderr) of a run with default options."""
+    err = io.StringIO()
+    with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
+        status = ct.main([folder, os.path.join(folder, "truth.tum")])
+    return status, err
+
+
 class ClosureTruth(unittest.TestCase):
     def test_errors_bad_closures_and_revisit_recall(self):
         with tempfile.TemporaryDirectory() as d:
@@ -70,32 +78,26 @@ class ClosureTruth(unittest.TestCase):
     def test_a_missing_column_names_the_file(self):
         with tempfile.TemporaryDirectory() as d:
             write_run(d, ["45,5,1,accepted,0,0\n"], header="query_keyframe,anchor_keyframe,accepted,reason,rel_x_m,rel_y_m\n")
-            err = io.StringIO()
-            with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
-                status = ct.main([d, os.path.join(d, "truth.tum")])
+            status, err = run_failing(d)
             self.assertEqual(status, 2)
-            self.assertIn("loop_closures.csv", err.getvalue())
-            self.assertIn("rel_yaw_deg", err.getvalue())
+            self.assertIn("loop_closures.csv", err)
+            self.assertIn("rel_yaw_deg", err)
 
     def test_a_truth_of_another_run_is_an_error(self):
         with tempfile.TemporaryDirectory() as d:
             write_run(d, ["45,5,1,accepted,0,0,0\n"])
             with open(os.path.join(d, "truth.tum"), "w") as f:
                 f.write("1000 0 0 0 0 0 0 1\n1001 1 0 0 0 0 0 1\n")
-            err = io.StringIO()
-            with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
-                status = ct.main([d, os.path.join(d, "truth.tum")])
+            status, err = run_failing(d)
             self.assertEqual(status, 2)
-            self.assertIn("truth.tum", err.getvalue())
+            self.assertIn("truth.tum", err)
 
     def test_an_unreadable_number_names_the_line(self):
         with tempfile.TemporaryDirectory() as d:
             write_run(d, ["45,5,1,accepted,0,zero,0\n"])
-            err = io.StringIO()
-            with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
-                status = ct.main([d, os.path.join(d, "truth.tum")])
+            status, err = run_failing(d)
             self.assertEqual(status, 2)
-            self.assertIn("loop_closures.csv:2", err.getvalue())
+            self.assertIn("loop_closures.csv:2", err)
 
     def test_a_keyframe_outside_the_run_is_an_error(self):
         with tempfile.TemporaryDirectory() as d:
