@@ -51,7 +51,7 @@ def run_failing(folder):
     err = io.StringIO()
     with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
         status = ct.main([folder, os.path.join(folder, "truth.tum")])
-    return status, err
+    return status, err.getvalue()
 
 
 class ClosureTruth(unittest.TestCase):
