@@ -83,7 +83,15 @@ const CLoopClosureDetector::TSubmapField& CLoopClosureDetector::fieldOf(size_t s
 			m_fieldCache.splice(m_fieldCache.begin(), m_fieldCache, it);
 			return *m_fieldCache.front().second;
 		}
-	auto field = std::make_unique<TSubmapField>(TSubmapField{CCorrelativeScanMatcher(m_options.matcher), {}, {}});
+	std::unique_ptr<TSubmapField> field;
+	if (!m_fieldCache.empty() && static_cast<int>(m_fieldCache.size()) >= m_options.max_cached_fields)
+	{  // the least recently used field is rebuilt in its own buffers
+		field = std::move(m_fieldCache.back().second);
+		m_fieldCache.pop_back();
+		field->points.clear();
+	}
+	else
+		field = std::make_unique<TSubmapField>(TSubmapField{CCorrelativeScanMatcher(m_options.matcher), {}, {}});
 	const auto& points = m_submaps[submap].points;
 	field->matcher.setReference(points);
 	field->free.build(field->matcher.grid(), m_submaps[submap].views);

@@ -10,9 +10,8 @@ void CMultiResolutionGrid::build(const std::vector<mrpt::math::TPoint2Df>& point
 								 double kernelSigma_m, int levels)
 {
 	if (resolution_m <= 0 || levels < 1) throw std::invalid_argument("CMultiResolutionGrid: bad resolution or levels");
-	m_levels.clear();
 	m_res = resolution_m;
-	if (points.empty()) return;
+	if (points.empty()) return m_levels.clear();
 	float minX = points[0].x, maxX = points[0].x, minY = points[0].y, maxY = points[0].y;
 	for (const auto& p : points)
 	{
@@ -25,9 +24,12 @@ void CMultiResolutionGrid::build(const std::vector<mrpt::math::TPoint2Df>& point
 	m_y0 = minY - margin * m_res;
 	m_width = static_cast<int>(std::ceil((maxX - minX) / m_res)) + 2 * margin + 1;
 	m_height = static_cast<int>(std::ceil((maxY - minY) / m_res)) + 2 * margin + 1;
-	m_levels.emplace_back(static_cast<size_t>(m_width) * m_height, uint8_t{0});
+	// A rebuilt grid (a recycled submap field) keeps its levels' storage:
+	// fresh multi-megabyte buffers cost page faults and zeroing per build.
+	m_levels.resize(static_cast<size_t>(levels));
+	m_levels[0].assign(static_cast<size_t>(m_width) * m_height, uint8_t{0});
 	stampPoints(points, kernelSigma_m);
-	for (int level = 1; level < levels; ++level) addMaxPooledLevel(level);
+	for (int level = 1; level < levels; ++level) poolLevel(level);
 }
 
 void CMultiResolutionGrid::stampPoints(const std::vector<mrpt::math::TPoint2Df>& points, double kernelSigma_m)
@@ -53,25 +55,31 @@ void CMultiResolutionGrid::stampPoints(const std::vector<mrpt::math::TPoint2Df>&
 	}
 }
 
-void CMultiResolutionGrid::addMaxPooledLevel(int level)
+void CMultiResolutionGrid::poolLevel(int level)
 {
-	// max over [x, x + 2^level) is the max of two blocks of 2^(level-1), in x then in y
+	// max over [x, x + 2^level) is the max of two blocks of 2^(level-1), in x
+	// then in y; cells whose second block lies past the edge keep the first.
+	// Branch-free inner loops over whole rows: the compiler vectorises them
+	// (intel: pooling was 3 % of a run with a per-cell edge test).
 	const int half = 1 << (level - 1);
-	const auto& prev = m_levels.back();
-	std::vector<uint8_t> rows(prev.size(), 0), next(prev.size(), 0);
-	for (int iy = 0; iy < m_height; ++iy)
-		for (int ix = 0; ix < m_width; ++ix)
-		{
-			const size_t i = static_cast<size_t>(iy) * m_width + ix;
-			rows[i] = ix + half < m_width ? std::max(prev[i], prev[i + half]) : prev[i];
-		}
-	for (int iy = 0; iy < m_height; ++iy)
-		for (int ix = 0; ix < m_width; ++ix)
-		{
-			const size_t i = static_cast<size_t>(iy) * m_width + ix;
-			next[i] = iy + half < m_height ? std::max(rows[i], rows[i + static_cast<size_t>(half) * m_width]) : rows[i];
-		}
-	m_levels.push_back(std::move(next));
+	const std::vector<uint8_t>& prev = m_levels[static_cast<size_t>(level - 1)];
+	std::vector<uint8_t>& next = m_levels[static_cast<size_t>(level)];
+	const size_t W = static_cast<size_t>(m_width);
+	const size_t innerX = static_cast<size_t>(std::max(0, m_width - half));
+	m_rows.resize(prev.size());
+	for (size_t iy = 0; iy < static_cast<size_t>(m_height); ++iy)
+	{
+		const uint8_t* p = prev.data() + iy * W;
+		uint8_t* r = m_rows.data() + iy * W;
+		for (size_t ix = 0; ix < innerX; ++ix) r[ix] = std::max(p[ix], p[ix + half]);
+		std::copy(p + innerX, p + W, r + innerX);
+	}
+	next.resize(prev.size());
+	const size_t shift = static_cast<size_t>(half) * W;
+	const size_t innerCells = static_cast<size_t>(std::max(0, m_height - half)) * W;
+	for (size_t i = 0; i < innerCells; ++i) next[i] = std::max(m_rows[i], m_rows[i + shift]);
+	std::copy(m_rows.begin() + static_cast<ptrdiff_t>(innerCells), m_rows.end(),
+			  next.begin() + static_cast<ptrdiff_t>(innerCells));
 }
 
 }  // namespace hslam::graph

@@ -23,7 +23,8 @@ namespace hslam::graph
 class CMultiResolutionGrid
 {
    public:
-	/** Builds the field and `levels` max-pooled levels (1 = finest only). */
+	/** Builds the field and `levels` max-pooled levels (1 = finest only),
+	 * replacing what the grid held (its buffers are reused). */
 	void build(const std::vector<mrpt::math::TPoint2Df>& points, double resolution_m, double kernelSigma_m, int levels);
 
 	bool empty() const { return m_levels.empty(); }
@@ -50,11 +51,13 @@ class CMultiResolutionGrid
 
    private:
 	void stampPoints(const std::vector<mrpt::math::TPoint2Df>& points, double kernelSigma_m);
-	void addMaxPooledLevel(int level);
+	/** Fills level `level` (already allocated) by pooling level - 1. */
+	void poolLevel(int level);
 
 	double m_res = 0.05, m_x0 = 0, m_y0 = 0;
 	int m_width = 0, m_height = 0;
 	std::vector<std::vector<uint8_t>> m_levels;
+	std::vector<uint8_t> m_rows;  //!< scratch of poolLevel(), kept for the next build
 };
 
 }  // namespace hslam::graph
