@@ -122,6 +122,13 @@ TEST(FrontEndScenarios, PeopleCrossingCloseAreLeftOutOfMatching)
 	const TScores without = runDefault(shipped("people-crossing"), {"dynamic_objects.exclude_from_matching=false"});
 	print("people crossing, excluded from matching", with);
 	print("people crossing, matched", without);
-	EXPECT_LT(with.ate_m, 0.05);  // measured 0.031 m (odometry 0.74 m)
-	EXPECT_LT(with.ate_m, 0.9 * without.ate_m);  // measured 0.031 vs 0.038 m
+	// Six people crossing close disturb neither: measured 0.031 m with the
+	// people's beams left out, 0.025 m with them matched (odometry 0.74 m).
+	// Leaving them out is not better on this sample: over five start offsets
+	// (scripts/offset-ensemble.sh) the medians are 0.033 against 0.023 m, the
+	// previous seed rule gave 0.031 / 0.038 m at this start but the same
+	// medians (docs/pose-estimation.md, "People out of matching, measured").
+	EXPECT_LT(with.ate_m, 0.05);
+	EXPECT_LT(without.ate_m, 0.05);
+	EXPECT_LT(with.ate_m, 0.1 * with.odometry_ate_m);
 }

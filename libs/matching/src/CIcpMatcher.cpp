@@ -1,4 +1,5 @@
 #include <hslam/matching/CIcpMatcher.h>
+#include <hslam/matching/alignment_fit.h>
 #include <mrpt/poses/CPosePDFGaussian.h>
 #include <mrpt/slam/CICP.h>
 
@@ -111,6 +112,7 @@ TPoseMatch CIcpMatcher::match(const CPointIndex2D& reference, const mrpt::maps::
 	};
 	TPoseMatch best = bestOfRestarts(alignAt, initialGuess, initialCov);
 	best.covariance = geometricAlignmentCovariance(reference, current, best.pose, m_options.geometric);
+	best.fit = alignmentFit(reference, current, best.pose, m_options.seed_fit_sigma_m);
 	return withQuality(best);
 }
 
@@ -145,6 +147,7 @@ TPoseMatch CIcpMatcher::finished(TPoseMatch result, const mrpt::maps::CSimplePoi
 	// for the chosen result, not for every restart.
 	if (m_options.covariance == "geometric")
 		result.covariance = geometricAlignmentCovariance(reference, current, result.pose, m_options.geometric);
+	result.fit = alignmentFit(reference, current, result.pose, m_options.seed_fit_sigma_m);
 	return withQuality(std::move(result));
 }
 

@@ -1,5 +1,7 @@
 #include <hslam/matching/icp_covariance.h>
 
+#include "reference_points.h"
+
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
@@ -9,34 +11,11 @@
 
 namespace hslam::matching
 {
+using detail::TIndexReference;
+using detail::TMrptReference;
+
 namespace
 {
-/** Reference points seen through MRPT's map and k-d tree... */
-struct TMrptReference
-{
-	const mrpt::maps::CSimplePointsMap& map;
-	void nearest(float x, float y, size_t k, std::vector<size_t>& idx, std::vector<float>& d2) const
-	{
-		map.kdTreeNClosestPoint2DIdx(x, y, k, idx, d2);
-	}
-	Eigen::Vector2d point(size_t i) const { return {map.getPointsBufferRef_x()[i], map.getPointsBufferRef_y()[i]}; }
-};
-
-/** ...or through a CPointIndex2D. */
-struct TIndexReference
-{
-	const CPointIndex2D& index;
-	void nearest(float x, float y, size_t k, std::vector<size_t>& idx, std::vector<float>& d2) const
-	{
-		uint32_t found[32];
-		d2.resize(std::min<size_t>(k, 32));
-		const size_t n = index.nearest(x, y, d2.size(), found, d2.data());
-		idx.assign(found, found + n);
-		d2.resize(n);
-	}
-	Eigen::Vector2d point(size_t i) const { return {index.x(i), index.y(i)}; }
-};
-
 /** Unit normal of the reference points idx (PCA: smallest eigenvector). */
 template <class Reference>
 bool fitNormal(const Reference& ref, const std::vector<size_t>& idx, Eigen::Vector2d& normal)

@@ -120,6 +120,17 @@ void CScanMatchingPoseEstimator::predict(const TOdometryIncrement& increment, co
 	if (m_gapSinceMatch) m_sinceMatchCov += unknownCov;
 }
 
+bool CScanMatchingPoseEstimator::betterSeedResult(const matching::TPoseMatch& later,
+												  const matching::TPoseMatch& earlier) const
+{
+	// By fit when it is computed: goodness cannot tell two basins apart that
+	// both pair most points (alignment_fit.h). Five start offsets of aces,
+	// csail and intel, front-end alone: heading errors above 1 deg per step
+	// summed 180 -> 119, 1162 -> 956, 1175 -> 1088 deg (docs/pose-estimation.md).
+	if (m_icp.options().seed_fit_sigma_m > 0) return later.fit > earlier.fit;
+	return later.score > earlier.score + m_icp.options().restart_goodness_tolerance;
+}
+
 std::optional<matching::TPoseMatch> CScanMatchingPoseEstimator::runIcp(
 	const matching::TLineScanFrame& frame, const common::TRangeData& scan, const std::vector<mrpt::poses::CPose2D>& seedsWorld)
 {
@@ -145,7 +156,7 @@ std::optional<matching::TPoseMatch> CScanMatchingPoseEstimator::runIcp(
 		// match), a weakly constrained direction is better measured than not.
 		const matching::CIcpMatcher& icp = m_gapSinceMatch || m_timedMatch ? m_icpWithoutPrior : m_icp;
 		auto m = matchAt(icp, seed);
-		if (!best || m.score > best->score + m_icp.options().restart_goodness_tolerance) best = std::move(m);
+		if (!best || betterSeedResult(m, *best)) best = std::move(m);
 	}
 	if (usesPointToLine() && best && best->quality != matching::EMatchQuality::failed)
 	{  // refine: point-to-line has no pull towards the seed along walls

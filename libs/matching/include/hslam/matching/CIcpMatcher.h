@@ -54,6 +54,10 @@ class CIcpMatcher
 		double restart_goodness_tolerance = 0.05;  //!< results this close to the best goodness compete on prior distance
 		double restart_min_step_rad = 3.0 * M_PI / 180.0;
 		double restart_max_step_rad = 15.0 * M_PI / 180.0;
+		/** Sigma (m) of the fit that chooses between the results of several
+		 * seeds (alignment_fit.h); 0 = by goodness, a later seed winning only
+		 * by more than restart_goodness_tolerance. */
+		double seed_fit_sigma_m = 0.05;
 		std::string covariance = "geometric";  //!< "geometric" (icp_covariance.h) or "mrpt" (CICP's own)
 		TGeometricCovarianceOptions geometric;
 		double min_xy_std_m = 0.02;  //!< covariance floor (laser noise, map blur)
@@ -80,6 +84,7 @@ class CIcpMatcher
 			v.real("restart_goodness_tolerance", restart_goodness_tolerance, 0.0, 1.0);
 			v.degrees("restart_min_step_deg", restart_min_step_rad, 0.1, 90.0);
 			v.degrees("restart_max_step_deg", restart_max_step_rad, 0.1, 90.0);
+			v.real("seed_fit_sigma_m", seed_fit_sigma_m, 0.0, 1.0);
 			v.choice("covariance", covariance, {"geometric", "mrpt"});
 			v.integer("covariance_normal_neighbours", geometric.normal_neighbours, 3, 50);
 			v.real("covariance_max_match_distance_m", geometric.max_match_distance_m, 0.01, 5.0);

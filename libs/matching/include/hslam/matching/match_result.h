@@ -29,6 +29,9 @@ struct TPoseMatch
 	EMatchQuality quality = EMatchQuality::failed;
 	double score = 0;  //!< matcher-specific: best line weight (lines), goodness (ICP)
 	size_t correspondences = 0;  //!< paired lines or matched points
+	/** ICP: mean Gaussian likelihood of the points at `pose` (alignment_fit.h),
+	 * which decides between the results of several seeds; 0 when not computed. */
+	double fit = 0;
 	std::string method;  //!< what produced it, e.g. "lines", "lines:points", "icp"
 };
 

@@ -111,6 +111,8 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	matching::TLineScanFrame makeFrame(const common::TRangeData& scan);
 	void predict(const TOdometryIncrement& increment, const TMotionPrior& prior);
 	void matchAndFuse(matching::TLineScanFrame& frame, const common::TRangeData& scan, TPoseEstimate& estimate);
+	/** Whether the ICP result of a later seed replaces an earlier one. */
+	bool betterSeedResult(const matching::TPoseMatch& later, const matching::TPoseMatch& earlier) const;
 	/** ICP from each seed (world frame, preferred first); the best result. */
 	std::optional<matching::TPoseMatch> runIcp(const matching::TLineScanFrame& frame, const common::TRangeData& scan,
 												const std::vector<mrpt::poses::CPose2D>& seedsWorld);

@@ -1,0 +1,102 @@
+/* alignmentFit (alignment_fit.h) on hand-derived cases. The reference is a
+ * wall y = 0 sampled every 1 mm from x = -1 to 11 m, so the nearest reference
+ * point of (x, y) with 0 <= x <= 10 lies at distance |y| (to 0.5 mm). The
+ * scan holds 10 points (1 ... 10, 0) in the robot frame.
+ *   pose (0, 0, 0):      every d = 0         -> fit = 1
+ *   pose (0, s, 0):      every d = s = sigma -> fit = exp(-1/2) = 0.6065
+ *   pose (0, 0, theta):  point k at d = k sin(theta); for theta = 0.01 rad,
+ *                        sigma = 0.05 m: mean of exp(-(0.01 k)^2 / 0.005)
+ *                        over k = 1..10 (to 1e-4) = 0.5545
+ * and the seed case the fit decides: a scan that pairs equally at two poses
+ * under a loose threshold but fits one of them far better. */
+#include <gtest/gtest.h>
+#include <hslam/matching/CPointIndex2D.h>
+#include <hslam/matching/alignment_fit.h>
+#include <hslam/matching/scan_points.h>
+
+#include <cmath>
+#include <vector>
+
+using namespace hslam::matching;
+using mrpt::poses::CPose2D;
+
+namespace
+{
+constexpr double kSigma_m = 0.05;
+
+mrpt::maps::CSimplePointsMap wallMap()
+{
+	mrpt::maps::CSimplePointsMap m;
+	for (int i = -1000; i <= 11000; ++i) m.insertPointFast(0.001f * static_cast<float>(i), 0.f, 0.f);
+	m.mark_as_modified();
+	return m;
+}
+
+CPointIndex2D wallIndex()
+{
+	std::vector<float> xs, ys;
+	for (int i = -1000; i <= 11000; ++i) xs.push_back(0.001f * static_cast<float>(i)), ys.push_back(0.f);
+	CPointIndex2D index;
+	index.build(std::move(xs), std::move(ys));
+	return index;
+}
+
+mrpt::maps::CSimplePointsMap scanPoints()
+{
+	mrpt::maps::CSimplePointsMap m;
+	for (int k = 1; k <= 10; ++k) m.insertPointFast(static_cast<float>(k), 0.f, 0.f);
+	return m;
+}
+
+double expectedRotatedFit(double theta_rad)
+{
+	double sum = 0;
+	for (int k = 1; k <= 10; ++k)
+	{
+		const double d = k * std::sin(theta_rad);
+		sum += std::exp(-0.5 * d * d / (kSigma_m * kSigma_m));
+	}
+	return sum / 10;
+}
+}  // namespace
+
+TEST(AlignmentFit, IsOneOnTheReferenceAndExpMinusHalfOneSigmaOff)
+{
+	const auto ref = wallMap();
+	const auto scan = scanPoints();
+	EXPECT_NEAR(alignmentFit(ref, scan, CPose2D(0, 0, 0), kSigma_m), 1.0, 1e-3);
+	EXPECT_NEAR(alignmentFit(ref, scan, CPose2D(0, kSigma_m, 0), kSigma_m), std::exp(-0.5), 1e-3);
+	EXPECT_NEAR(alignmentFit(ref, scan, CPose2D(0, 0, 0.01), kSigma_m), expectedRotatedFit(0.01), 2e-3);
+	EXPECT_NEAR(expectedRotatedFit(0.01), 0.5545, 1e-4);
+}
+
+TEST(AlignmentFit, IndexReferenceGivesTheSameFigures)
+{
+	const auto index = wallIndex();
+	const auto scan = scanPoints();
+	EXPECT_NEAR(alignmentFit(index, scan, CPose2D(0, 0, 0), kSigma_m), 1.0, 1e-3);
+	EXPECT_NEAR(alignmentFit(index, scan, CPose2D(0, kSigma_m, 0), kSigma_m), std::exp(-0.5), 1e-3);
+	EXPECT_NEAR(alignmentFit(index, scan, CPose2D(0, 0, 0.01), kSigma_m), expectedRotatedFit(0.01), 2e-3);
+}
+
+TEST(AlignmentFit, EmptyInputsAndNoSigmaGiveZero)
+{
+	const auto ref = wallMap();
+	EXPECT_EQ(alignmentFit(ref, mrpt::maps::CSimplePointsMap(), CPose2D(), kSigma_m), 0.0);
+	EXPECT_EQ(alignmentFit(mrpt::maps::CSimplePointsMap(), scanPoints(), CPose2D(), kSigma_m), 0.0);
+	EXPECT_EQ(alignmentFit(ref, scanPoints(), CPose2D(), 0.0), 0.0);
+}
+
+TEST(AlignmentFit, TellsApartTwoPosesAThresholdCountCannot)
+{
+	// At 0.04 m and 0.12 m off the wall every point is within a 0.15 m
+	// pairing threshold (a goodness of 1 for both); the fit is exp(-0.32) =
+	// 0.726 against exp(-2.88) = 0.056.
+	const auto ref = wallMap();
+	const auto scan = scanPoints();
+	const double nearFit = alignmentFit(ref, scan, CPose2D(0, 0.04, 0), kSigma_m);
+	const double farFit = alignmentFit(ref, scan, CPose2D(0, 0.12, 0), kSigma_m);
+	EXPECT_NEAR(nearFit, std::exp(-0.32), 2e-3);
+	EXPECT_NEAR(farFit, std::exp(-2.88), 2e-3);
+	EXPECT_GT(nearFit, 10 * farFit);
+}
