@@ -101,3 +101,65 @@ TEST(MotionPrior, StallEvidenceOlderThanTheWindowIsForgotten)
 	EXPECT_EQ(p.source, TMotionPrior::ESource::odometry);
 	EXPECT_EQ(p.reason, "");
 }
+
+TEST(MotionPrior, MatchesAcceptedFarOutsideThePredictionCountAsRefused)
+{
+	// Laser-only sample cut at entry 14, the robot driving at 0.6 m/s while
+	// the readings creep: against a 2 mm prediction a well-constrained match
+	// 0.12 m ahead was accepted (NIS 23, inside gate_nis = 50) and moved the
+	// estimate 2 mm; the next two were rejected (NIS 238, 571).
+	CMotionPrior prior;  // contradicting_nis = 16.27, rejected_matches_for_stall = 3
+	const Eigen::Matrix3d wellConstrained = Eigen::Vector3d(0.03 * 0.03, 0.02 * 0.02, 0.01).asDiagonal();
+	double t = 1.0;
+	prior.prior(odometry(0.001, 0, 0), t);
+	prior.observePose(CPose2D(0, 0, 0), t);
+	EXPECT_FALSE(prior.contradictedMatchSeed(t).has_value());
+	const double measured[] = {0.120, 0.468, 0.836};
+	const double nis[] = {23.2, 237.5, 570.9};
+	const bool accepted[] = {true, false, false};
+	for (int k = 0; k < 3; ++k)
+	{
+		t += 0.6;
+		EXPECT_NE(prior.prior(odometry(0.001, 0, 0), t).reason, "stalled") << k;
+		prior.observeMatch(CPose2D(measured[k], 0, 0), wellConstrained, accepted[k], nis[k], t);
+		prior.observePose(CPose2D(0.002 * (k + 1), 0, 0), t);
+	}
+	// three refused in a row: stalled, and the velocity is the matches' own
+	EXPECT_EQ(prior.prior(odometry(0.001, 0, 0), t + 0.2).reason, "stalled");
+	EXPECT_NEAR(prior.velocity().x(), (0.836 - 0.468) / 0.6, 1e-9);
+	// the seed for the next match: the last refused match moved on by it
+	const auto seed = prior.contradictedMatchSeed(t + 0.2);
+	ASSERT_TRUE(seed.has_value());
+	EXPECT_NEAR(seed->x(), 0.836 + 0.2 * (0.836 - 0.468) / 0.6, 1e-9);
+	// with the threshold off, the first (accepted) match resets the count
+	CMotionPrior::TOptions o;
+	o.contradicting_nis = 0;
+	CMotionPrior old(o);
+	t = 1.0;
+	old.prior(odometry(0.001, 0, 0), t);
+	old.observePose(CPose2D(0, 0, 0), t);
+	for (int k = 0; k < 3; ++k)
+	{
+		t += 0.6;
+		old.prior(odometry(0.001, 0, 0), t);
+		old.observeMatch(CPose2D(measured[k], 0, 0), wellConstrained, accepted[k], nis[k], t);
+		old.observePose(CPose2D(0.002 * (k + 1), 0, 0), t);
+	}
+	EXPECT_NE(old.prior(odometry(0.001, 0, 0), t + 0.2).reason, "stalled");
+}
+
+TEST(MotionPrior, NoRefusedSeedOnceAMatchAgreesOrTheWindowHasPassed)
+{
+	CMotionPrior prior;
+	const Eigen::Matrix3d wellConstrained = Eigen::Vector3d(0.03 * 0.03, 0.02 * 0.02, 0.01).asDiagonal();
+	prior.prior(odometry(0.001, 0, 0), 1.0);
+	prior.observeMatch(CPose2D(0.5, 0, 0), wellConstrained, false, 200, 1.0);
+	EXPECT_TRUE(prior.contradictedMatchSeed(1.5).has_value());
+	EXPECT_FALSE(prior.contradictedMatchSeed(1.0 + 3.1).has_value());  // disagreement_window_s = 3
+	prior.observeMatch(CPose2D(0.01, 0, 0), wellConstrained, true, 1.0, 1.6);  // agrees
+	EXPECT_FALSE(prior.contradictedMatchSeed(1.7).has_value());
+	// a corridor match (unconstrained along the axis) says nothing either way
+	const Eigen::Matrix3d corridor = Eigen::Vector3d(5.0 * 5.0, 0.02 * 0.02, 0.01).asDiagonal();
+	prior.observeMatch(CPose2D(2.0, 0, 0), corridor, false, 300, 1.8);
+	EXPECT_FALSE(prior.contradictedMatchSeed(1.9).has_value());
+}

@@ -141,7 +141,7 @@ void CLocalMapPoseEstimator::fuse(const matching::TMapMatch& m, TPoseEstimate& e
 	const bool weak = m.match.quality == matching::EMatchQuality::weak;
 	const Eigen::Matrix3d R = m_noise.effectiveCovariance(m.match.covariance, weak);
 	auto result = m_ukf.updateAbsolute(toVec(m.match.pose), R, m_ukfOptions.gate_nis);
-	if (!weak) m_motion.observeMatch(m.match.pose, m.match.covariance, result.accepted, m_matchTime_s);
+	if (!weak) m_motion.observeMatch(m.match.pose, m.match.covariance, result.accepted, result.nis, m_matchTime_s);
 	const bool slip = !result.accepted && m.inlier_fraction_at_guess < m_recovery.slip_max_guess_inliers &&
 					  m.match.score >= m_recovery.slip_min_inliers;
 	if (slip)

@@ -73,11 +73,12 @@ bool CMotionPrior::odometryStalled(double t_s) const
 }
 
 void CMotionPrior::observeMatch(const mrpt::poses::CPose2D& measured, const Eigen::Matrix3d& covariance,
-								bool accepted, double t_s)
+								bool accepted, double nis, double t_s)
 {
 	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(covariance.topLeftCorner<2, 2>());
 	if (!(eig.eigenvalues().maxCoeff() <= m_options.measured_max_std_m * m_options.measured_max_std_m)) return;
-	m_rejectedInARow = accepted ? 0 : m_rejectedInARow + 1;
+	const bool contradicted = !accepted || (m_options.contradicting_nis > 0 && nis > m_options.contradicting_nis);
+	m_rejectedInARow = contradicted ? m_rejectedInARow + 1 : 0;
 	if (m_havePreviousMatch && t_s - m_previousMatch_s >= m_options.min_interval_s &&
 		t_s > m_previousMatch_s && (m_stalled || m_rejectedInARow > 1))
 	{  // the estimate follows odometry until the filter lets go: take the measured velocity
@@ -85,6 +86,14 @@ void CMotionPrior::observeMatch(const mrpt::poses::CPose2D& measured, const Eige
 		m_measuredVelocity_s = t_s;
 	}
 	m_previousMatch = measured, m_previousMatch_s = t_s, m_havePreviousMatch = true;
+}
+
+std::optional<mrpt::poses::CPose2D> CMotionPrior::contradictedMatchSeed(double t_s) const
+{
+	if (m_rejectedInARow == 0 || !m_havePreviousMatch) return std::nullopt;
+	const double dt = t_s - m_previousMatch_s;
+	if (dt < 0 || dt > m_options.disagreement_window_s) return std::nullopt;
+	return m_previousMatch + mrpt::poses::CPose2D(m_velocity.x() * dt, m_velocity.y() * dt, m_velocity.z() * dt);
 }
 
 void CMotionPrior::observePose(const mrpt::poses::CPose2D& pose, double t_s)

@@ -120,6 +120,14 @@ void CScanMatchingPoseEstimator::predict(const TOdometryIncrement& increment, co
 	if (m_gapSinceMatch) m_sinceMatchCov += unknownCov;
 }
 
+void CScanMatchingPoseEstimator::addSeedIfNew(std::vector<mrpt::poses::CPose2D>& seeds, const mrpt::poses::CPose2D& seed)
+{
+	for (const auto& s : seeds)
+		if (s.distanceTo(seed) <= 0.05 && std::abs(mrpt::math::wrapToPi(s.phi() - seed.phi())) <= 1.0 * M_PI / 180)
+			return;
+	seeds.push_back(seed);
+}
+
 bool CScanMatchingPoseEstimator::betterSeedResult(const matching::TPoseMatch& later,
 												  const matching::TPoseMatch& earlier) const
 {
@@ -203,7 +211,7 @@ void CScanMatchingPoseEstimator::fuse(const matching::TPoseMatch& match, bool re
 	const Eigen::Matrix3d R = noise.effectiveCovariance(match.covariance, weak);
 	const auto result = relative ? m_ukf.updateRelative(toVec(match.pose), R, m_ukfOptions.gate_nis)
 								 : m_ukf.updateAbsolute(toVec(match.pose), R, m_ukfOptions.gate_nis);
-	if (!relative && !weak) m_motion.observeMatch(match.pose, match.covariance, result.accepted, m_matchTime_s);
+	if (!relative && !weak) m_motion.observeMatch(match.pose, match.covariance, result.accepted, result.nis, m_matchTime_s);
 	if (result.accepted) noise.observeNis(result.nis);
 	estimate.match_method = match.method;
 	estimate.match_quality = match.quality;
@@ -235,10 +243,10 @@ void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, c
 		// decide the basin ICP converges in).
 		std::vector<mrpt::poses::CPose2D> seeds;
 		if (lineUsable) seeds.push_back(clonePose + lineMatch->pose);
-		const mrpt::poses::CPose2D predicted = currentPose();
-		if (seeds.empty() || seeds.front().distanceTo(predicted) > 0.05 ||
-			std::abs(mrpt::math::wrapToPi(seeds.front().phi() - predicted.phi())) > 1.0 * M_PI / 180)
-			seeds.push_back(predicted);
+		addSeedIfNew(seeds, currentPose());
+		// where the matches the filter keeps refusing put the robot (CMotionPrior)
+		if (const auto refused = m_motion.contradictedMatchSeed(m_matchTime_s); refused && m_options.seed_refused_matches)
+			addSeedIfNew(seeds, *refused);
 		icpMatch = runIcp(frame, scan, seeds);
 		m_sinceIcp = mrpt::poses::CPose2D();
 		m_lastIcp_s = m_matchTime_s;

@@ -75,6 +75,10 @@ struct TPoseEstimationOptions
 	 * ([keyframes], [map_matching]); "mrpt+point_to_line" = MRPT's result
 	 * refined by CPointToLineIcp (MRPT's basin, no sliding along walls). */
 	std::string icp_matcher = "mrpt";
+	/** icp and lines+icp: also seed ICP where the last well-constrained match
+	 * the filter refused puts the robot now (CMotionPrior::
+	 * contradictedMatchSeed); the fit ([icp] seed_fit_sigma_m) decides. */
+	bool seed_refused_matches = true;
 
 	template <class V>
 	void visit(V& v)
@@ -87,6 +91,7 @@ struct TPoseEstimationOptions
 		v.flag("icp_always", icp_always);
 		v.real("match_every_s", match_every_s, 0.0, 1e6);
 		v.choice("icp_matcher", icp_matcher, {"mrpt", "point_to_line", "mrpt+point_to_line"});
+		v.flag("seed_refused_matches", seed_refused_matches);
 	}
 };
 

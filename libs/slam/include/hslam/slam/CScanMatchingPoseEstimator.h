@@ -111,6 +111,8 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	matching::TLineScanFrame makeFrame(const common::TRangeData& scan);
 	void predict(const TOdometryIncrement& increment, const TMotionPrior& prior);
 	void matchAndFuse(matching::TLineScanFrame& frame, const common::TRangeData& scan, TPoseEstimate& estimate);
+	/** Appends `seed` unless one within 0.05 m / 1 deg is already there. */
+	static void addSeedIfNew(std::vector<mrpt::poses::CPose2D>& seeds, const mrpt::poses::CPose2D& seed);
 	/** Whether the ICP result of a later seed replaces an earlier one. */
 	bool betterSeedResult(const matching::TPoseMatch& later, const matching::TPoseMatch& earlier) const;
 	/** ICP from each seed (world frame, preferred first); the best result. */
