@@ -57,7 +57,8 @@ bool CLoopClosureDetector::checkUniqueness(const CCorrelativeScanMatcher& m, con
 {
 	const auto guess = relativePose(out.anchor_pose, out.query_pose_estimate);
 	const TSearchExclusion near{best.pose, m_options.ambiguity_xy_m, m_options.ambiguity_yaw_rad};
-	const auto second = m.match(m_queryPoints, guess, c.window, &near, m_options.ambiguity_ratio * best.score,
+	const TSearchWindow wider{c.window.xy_m * m_options.ambiguity_window_factor, c.window.yaw_rad};
+	const auto second = m.match(m_queryPoints, guess, wider, &near, m_options.ambiguity_ratio * best.score,
 								EMatchOutput::pose_only);
 	if (!second.found) return true;
 	out.second_score = second.score;

@@ -29,7 +29,8 @@
  *     seen from behind);
  *  4. consistency: the correction the closure implies for the current pose is
  *     within the chi2 gate of that relative covariance plus the closure's;
- *  5. uniqueness: no other pose in the window (outside a small exclusion)
+ *  5. uniqueness: no other pose in the window, its translation widened by
+ *     ambiguity_window_factor (outside a small exclusion around the best),
  *     reaches ambiguity_ratio x the best score (repeated rooms, corridors).
  * Then the back-end (CGraphBackend) asks for a second opinion: a closure that
  * passed is held ("awaiting confirmation") until another one, from the same
@@ -69,6 +70,11 @@ struct TLoopClosureOptions
 	int min_query_points = 50;
 	double ambiguity_ratio = 0.75;  //!< a second peak at this fraction of the best rejects the closure
 	double ambiguity_xy_m = 0.5, ambiguity_yaw_rad = mrpt::DEG2RAD(10.0);  //!< what counts as "another" peak
+	/** The second peak is looked for over the search window's translation
+	 * times this: a place repeated just outside the window (the true one,
+	 * when the graph's uncertainty is understated) must make the one inside
+	 * ambiguous, not unique. */
+	double ambiguity_window_factor = 1.5;
 	double min_icp_goodness = 0.7;
 	double icp_max_shift_m = 0.15, icp_max_shift_yaw_rad = mrpt::DEG2RAD(2.0);
 	double consistency_chi2 = 16.27;  //!< 3-dof chi2 gate (99.9 %) of the implied correction
@@ -100,6 +106,7 @@ struct TLoopClosureOptions
 		v.integer("min_query_points", min_query_points, 1, 100000);
 		v.real("ambiguity_ratio", ambiguity_ratio, 0.0, 1.0);
 		v.real("ambiguity_xy_m", ambiguity_xy_m, 0.0, 100.0);
+		v.real("ambiguity_window_factor", ambiguity_window_factor, 1.0, 10.0);
 		v.degrees("ambiguity_yaw_deg", ambiguity_yaw_rad, 0.0, 180.0);
 		v.real("min_icp_goodness", min_icp_goodness, 0.0, 1.0);
 		v.real("icp_max_shift_m", icp_max_shift_m, 0.0, 10.0);
