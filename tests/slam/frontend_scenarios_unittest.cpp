@@ -91,11 +91,19 @@ TEST(FrontEndScenarios, LaserOnlyStartedWhileDrivingIsTracked)
 	// prediction, refused the matches that saw the motion and stayed put for
 	// 17 s: ATE 1.37 m (24: 1.76 m, 36: 4.19 m). Matches accepted far outside
 	// the prediction now count as refused ([motion_prior] contradicting_nis),
-	// and ICP is also seeded where the refused matches put the robot.
+	// and ICP is also seeded where the refused matches put the robot
+	// ([pose_estimation] seed_refused_matches).
 	const TScores s = runDefault(shipped("laser-only"), {}, 14);
 	print("laser only, from entry 14", s);
 	EXPECT_GT(s.odometry_ate_m, 5.0);
-	EXPECT_LT(s.ate_m, 0.2);  // measured 0.074 m
+	EXPECT_LT(s.ate_m, 0.2);  // measured 0.117 m
+	// From entry 150 three matches were refused and the stall declared, but
+	// from the stuck state a wrong ICP result fitted the only keyframe better
+	// than the right one from the refused matches' seed (3.13 m): the filter
+	// is now restarted where the refused matches put the robot.
+	const TScores later = runDefault(shipped("laser-only"), {}, 150);
+	print("laser only, from entry 150", later);
+	EXPECT_LT(later.ate_m, 0.2);  // measured 0.086 m
 	const TScores old = runDefault(
 		shipped("laser-only"), {"motion_prior.contradicting_nis=0", "pose_estimation.seed_refused_matches=false"}, 14);
 	print("laser only, from entry 14, as before", old);

@@ -124,6 +124,9 @@ class CMotionPrior
 	 * while three matches 0.1-0.8 m ahead were refused). nullopt otherwise or
 	 * after disagreement_window_s. */
 	std::optional<mrpt::poses::CPose2D> contradictedMatchSeed(double t_s) const;
+	/** Whether the filter has refused rejected_matches_for_stall
+	 * well-constrained matches in a row (one of the ways to "stalled"). */
+	bool refusingMatches() const { return m_rejectedInARow >= m_options.rejected_matches_for_stall; }
 	/** Robot-frame velocity (m/s, m/s, rad/s) of the recent estimates. */
 	Eigen::Vector3d velocity() const { return m_velocity; }
 

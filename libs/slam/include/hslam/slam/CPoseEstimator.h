@@ -77,7 +77,8 @@ struct TPoseEstimationOptions
 	std::string icp_matcher = "mrpt";
 	/** icp and lines+icp: also seed ICP where the last well-constrained match
 	 * the filter refused puts the robot now (CMotionPrior::
-	 * contradictedMatchSeed); the fit ([icp] seed_fit_sigma_m) decides. */
+	 * contradictedMatchSeed; the fit, [icp] seed_fit_sigma_m, decides), and
+	 * restart the filter there once the refusals declare a stall. */
 	bool seed_refused_matches = true;
 
 	template <class V>

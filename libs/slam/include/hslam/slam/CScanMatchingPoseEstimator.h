@@ -111,6 +111,9 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	matching::TLineScanFrame makeFrame(const common::TRangeData& scan);
 	void predict(const TOdometryIncrement& increment, const TMotionPrior& prior);
 	void matchAndFuse(matching::TLineScanFrame& frame, const common::TRangeData& scan, TPoseEstimate& estimate);
+	/** Restarts the filter where the refused matches put the robot when
+	 * they made the motion prior declare a stall (seed_refused_matches). */
+	void restartAtRefusedMatches(const TMotionPrior& prior, double t_s);
 	/** Appends `seed` unless one within 0.05 m / 1 deg is already there. */
 	static void addSeedIfNew(std::vector<mrpt::poses::CPose2D>& seeds, const mrpt::poses::CPose2D& seed);
 	/** Whether the ICP result of a later seed replaces an earlier one. */
