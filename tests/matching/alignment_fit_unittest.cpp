@@ -60,24 +60,23 @@ double expectedRotatedFit(double theta_rad)
 }
 }  // namespace
 
+/** The three hand-derived figures of the file comment, for either reference type. */
+template <class Reference>
+void expectHandDerivedFigures(const Reference& reference)
+{
+	const auto scan = scanPoints();
+	EXPECT_NEAR(alignmentFit(reference, scan, CPose2D(0, 0, 0), kSigma_m), 1.0, 1e-3);
+	EXPECT_NEAR(alignmentFit(reference, scan, CPose2D(0, kSigma_m, 0), kSigma_m), std::exp(-0.5), 1e-3);
+	EXPECT_NEAR(alignmentFit(reference, scan, CPose2D(0, 0, 0.01), kSigma_m), expectedRotatedFit(0.01), 2e-3);
+}
+
 TEST(AlignmentFit, IsOneOnTheReferenceAndExpMinusHalfOneSigmaOff)
 {
-	const auto ref = wallMap();
-	const auto scan = scanPoints();
-	EXPECT_NEAR(alignmentFit(ref, scan, CPose2D(0, 0, 0), kSigma_m), 1.0, 1e-3);
-	EXPECT_NEAR(alignmentFit(ref, scan, CPose2D(0, kSigma_m, 0), kSigma_m), std::exp(-0.5), 1e-3);
-	EXPECT_NEAR(alignmentFit(ref, scan, CPose2D(0, 0, 0.01), kSigma_m), expectedRotatedFit(0.01), 2e-3);
+	expectHandDerivedFigures(wallMap());
 	EXPECT_NEAR(expectedRotatedFit(0.01), 0.5545, 1e-4);
 }
 
-TEST(AlignmentFit, IndexReferenceGivesTheSameFigures)
-{
-	const auto index = wallIndex();
-	const auto scan = scanPoints();
-	EXPECT_NEAR(alignmentFit(index, scan, CPose2D(0, 0, 0), kSigma_m), 1.0, 1e-3);
-	EXPECT_NEAR(alignmentFit(index, scan, CPose2D(0, kSigma_m, 0), kSigma_m), std::exp(-0.5), 1e-3);
-	EXPECT_NEAR(alignmentFit(index, scan, CPose2D(0, 0, 0.01), kSigma_m), expectedRotatedFit(0.01), 2e-3);
-}
+TEST(AlignmentFit, IndexReferenceGivesTheSameFigures) { expectHandDerivedFigures(wallIndex()); }
 
 TEST(AlignmentFit, EmptyInputsAndNoSigmaGiveZero)
 {

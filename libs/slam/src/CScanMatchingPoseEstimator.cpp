@@ -257,8 +257,8 @@ void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, c
 		if (lineUsable) seeds.push_back(clonePose + lineMatch->pose);
 		addSeedIfNew(seeds, currentPose());
 		// where the matches the filter keeps refusing put the robot (CMotionPrior)
-		if (const auto refused = m_motion.contradictedMatchSeed(m_matchTime_s); refused && m_options.seed_refused_matches)
-			addSeedIfNew(seeds, *refused);
+		if (m_options.seed_refused_matches)
+			if (const auto refused = m_motion.contradictedMatchSeed(m_matchTime_s)) addSeedIfNew(seeds, *refused);
 		icpMatch = runIcp(frame, scan, seeds);
 		m_sinceIcp = mrpt::poses::CPose2D();
 		m_lastIcp_s = m_matchTime_s;
@@ -285,7 +285,11 @@ TPoseEstimate CScanMatchingPoseEstimator::update(const TOdometryIncrement& incre
 	TPoseEstimate estimate;
 	const TMotionPrior prior = m_motion.prior(increment, scan.t_s);
 	estimate.motion_prior = prior.reason;
-	if (m_started) predict(increment, prior), restartAtRefusedMatches(prior, scan.t_s);
+	if (m_started)
+	{
+		predict(increment, prior);
+		restartAtRefusedMatches(prior, scan.t_s);
+	}
 	if (!m_started || dueForMatch(scan.t_s))
 	{
 		m_timedMatch = dueByTime(scan.t_s);  // a timed match checks with ICP too
