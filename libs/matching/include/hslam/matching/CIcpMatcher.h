@@ -17,6 +17,7 @@
 #pragma once
 
 #include <hslam/matching/CPointToPointIcp.h>
+#include <hslam/matching/competing_basins.h>
 #include <hslam/matching/icp_covariance.h>
 #include <hslam/matching/match_result.h>
 #include <mrpt/maps/CSimplePointsMap.h>
@@ -58,6 +59,9 @@ class CIcpMatcher
 		 * seeds (alignment_fit.h); 0 = by goodness, a later seed winning only
 		 * by more than restart_goodness_tolerance. */
 		double seed_fit_sigma_m = 0.05;
+		/** Results of other seeds that fit about as well widen the chosen
+		 * one's covariance (competing_basins.h). */
+		TCompetingBasinOptions competing;
 		std::string covariance = "geometric";  //!< "geometric" (icp_covariance.h) or "mrpt" (CICP's own)
 		TGeometricCovarianceOptions geometric;
 		double min_xy_std_m = 0.02;  //!< covariance floor (laser noise, map blur)
@@ -85,6 +89,8 @@ class CIcpMatcher
 			v.degrees("restart_min_step_deg", restart_min_step_rad, 0.1, 90.0);
 			v.degrees("restart_max_step_deg", restart_max_step_rad, 0.1, 90.0);
 			v.real("seed_fit_sigma_m", seed_fit_sigma_m, 0.0, 1.0);
+			v.real("competing_fit_ratio", competing.fit_ratio, 0.0, 1.0);
+			v.real("competing_min_chi2", competing.min_distance_chi2, 0.0, 1000.0);
 			v.choice("covariance", covariance, {"geometric", "mrpt"});
 			v.integer("covariance_normal_neighbours", geometric.normal_neighbours, 3, 50);
 			v.real("covariance_max_match_distance_m", geometric.max_match_distance_m, 0.01, 5.0);

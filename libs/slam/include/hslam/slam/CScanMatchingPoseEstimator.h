@@ -118,9 +118,12 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	static void addSeedIfNew(std::vector<mrpt::poses::CPose2D>& seeds, const mrpt::poses::CPose2D& seed);
 	/** Whether the ICP result of a later seed replaces an earlier one. */
 	bool betterSeedResult(const matching::TPoseMatch& later, const matching::TPoseMatch& earlier) const;
-	/** ICP from each seed (world frame, preferred first); the best result. */
+	/** ICP from each seed (world frame, preferred first); the best result,
+	 * its covariance widened over competing basins when `predictionTrusted`
+	 * (competing_basins.h). */
 	std::optional<matching::TPoseMatch> runIcp(const matching::TLineScanFrame& frame, const common::TRangeData& scan,
-												const std::vector<mrpt::poses::CPose2D>& seedsWorld);
+												const std::vector<mrpt::poses::CPose2D>& seedsWorld,
+												bool predictionTrusted);
 	std::optional<matching::TPoseMatch> runPointToLineIcp(const common::TRangeData& scan,
 														   const std::vector<mrpt::poses::CPose2D>& seedsWorld);
 	void addKeyframeIfDue(const matching::TLineScanFrame& frame, const common::TRangeData& scan);
