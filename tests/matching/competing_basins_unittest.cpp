@@ -36,6 +36,9 @@ TEST(CompetingBasins, AFarResultFittingNearlyAsWellWidensTheCovarianceByItsOffse
 	EXPECT_NEAR(chosen.covariance(1, 1), 0.0025, 1e-12);
 	EXPECT_NEAR(chosen.covariance(2, 2), kDeg * kDeg, 1e-12);
 	EXPECT_NEAR(chosen.covariance(0, 1), 0.0, 1e-12);
+	// the basin's own covariance is kept (the motion prior judges by it)
+	ASSERT_TRUE(chosen.basin_covariance.has_value());
+	EXPECT_NEAR((*chosen.basin_covariance)(0, 0), 0.0025, 1e-12);
 }
 
 TEST(CompetingBasins, AResultFittingClearlyWorseDoesNotCompete)
@@ -44,6 +47,7 @@ TEST(CompetingBasins, AResultFittingClearlyWorseDoesNotCompete)
 	// 0.50 / 0.70 = 0.71 < 0.75
 	EXPECT_FALSE(widenForCompetingBasins(chosen, {result(CPose2D(0.5, 0, 0), 0.50)}, {}));
 	EXPECT_NEAR(chosen.covariance(0, 0), 0.0025, 1e-12);
+	EXPECT_FALSE(chosen.basin_covariance.has_value());
 }
 
 TEST(CompetingBasins, TheSameBasinAndFailedResultsDoNotCompete)

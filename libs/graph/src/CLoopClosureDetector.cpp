@@ -145,7 +145,21 @@ std::vector<TLoopClosure> CLoopClosureDetector::detect(size_t node, const CPoseG
 {
 	std::vector<TLoopClosure> out;
 	if (node != m_queryNode || node % static_cast<size_t>(m_options.detect_every_n_keyframes) != 0) return out;
-	for (const auto& c : candidates(node, graph, relativeCovariance)) out.push_back(verify(c, node, graph));
+	for (const auto& c : candidates(node, graph, relativeCovariance))
+	{
+		// Seen from a keyframe 0.5 m away, a submap that matched nowhere in
+		// its window rarely matches now; its slot is not handed to a farther
+		// candidate (that would cost the same and overlap less).
+		const auto low = m_lowScoreAt.find(c.submap);
+		if (low != m_lowScoreAt.end() &&
+			node < low->second + static_cast<size_t>(m_options.retest_low_score_after_keyframes))
+		{
+			++m_skippedRecentLowScore;
+			continue;
+		}
+		out.push_back(verify(c, node, graph));
+		if (out.back().reason == "low score") m_lowScoreAt[c.submap] = node;
+	}
 	return out;
 }
 

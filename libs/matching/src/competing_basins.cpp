@@ -22,6 +22,7 @@ bool widenForCompetingBasins(TPoseMatch& chosen, const std::vector<TPoseMatch>& 
 		if (chi2 >= options.min_distance_chi2 && chi2 > widestChi2) widestChi2 = chi2, widest = d;
 	}
 	if (widestChi2 == 0) return false;
+	chosen.basin_covariance = chosen.covariance;
 	chosen.covariance += widest * widest.transpose();
 	return true;
 }

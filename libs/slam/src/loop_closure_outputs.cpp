@@ -17,6 +17,7 @@ void printLoopClosureTiming(const CLoopClosureStage& stage, std::ostream& out)
 		<< "  closures tested:        " << t.candidates_tested << " (accepted " << t.closures_accepted
 		<< ", rejected " << rejected << ")\n"
 		<< "  not tested, little information: " << stage.backend().detector().skippedLittleInformation() << "\n"
+		<< "  not tested, low score just before: " << stage.backend().detector().skippedRecentLowScore() << "\n"
 		<< "  optimisations:          " << t.optimizations << "\n"
 		<< "  back-end total ms:      " << t.total_ms << " (detection " << t.detect_ms << ", optimisation "
 		<< t.optimize_ms << ")\n"

@@ -47,6 +47,7 @@
 
 #include <functional>
 #include <list>
+#include <map>
 #include <optional>
 #include <memory>
 #include <string>
@@ -61,6 +62,10 @@ struct TLoopClosureOptions
 	int min_separation_keyframes = 30;  //!< submaps with a keyframe this recent are not candidates
 	int detect_every_n_keyframes = 1;  //!< search at every n-th keyframe
 	int max_candidates = 3;  //!< submaps matched per search (nearest first)
+	/** A submap whose search ended with a low score is not searched again
+	 * from the next this-many-minus-one keyframes (its slot among
+	 * max_candidates stays spent); 1 = every time. */
+	int retest_low_score_after_keyframes = 1;
 	double overlap_distance_m = 6.0;  //!< anchor within this (plus the window) of the current pose
 	double window_sigmas = 3.0;  //!< window = this x the relative standard deviation
 	double min_window_xy_m = 0.5, max_window_xy_m = 4.0;
@@ -95,6 +100,7 @@ struct TLoopClosureOptions
 		v.integer("min_separation_keyframes", min_separation_keyframes, 1, 100000);
 		v.integer("detect_every_n_keyframes", detect_every_n_keyframes, 1, 1000);
 		v.integer("max_candidates", max_candidates, 1, 100);
+		v.integer("retest_low_score_after_keyframes", retest_low_score_after_keyframes, 1, 1000);
 		v.real("overlap_distance_m", overlap_distance_m, 0.0, 100.0);
 		v.real("window_sigmas", window_sigmas, 0.0, 100.0);
 		v.real("min_window_xy_m", min_window_xy_m, 0.0, 100.0);
@@ -184,6 +190,9 @@ class CLoopClosureDetector
 	/** Candidates in range that were not tested: a closure would have told
 	 * the graph less than min_information_gain_nats. */
 	size_t skippedLittleInformation() const { return m_skippedLittleInformation; }
+	/** Candidates not searched: their last search, a few keyframes ago, ended
+	 * with a low score (retest_low_score_after_keyframes). */
+	size_t skippedRecentLowScore() const { return m_skippedRecentLowScore; }
 
    private:
 	struct TCandidate;
@@ -207,6 +216,8 @@ class CLoopClosureDetector
 	TPointCloud2D m_queryPoints;  //!< points of the last added keyframe
 	size_t m_queryNode = 0;
 	size_t m_skippedLittleInformation = 0;
+	size_t m_skippedRecentLowScore = 0;
+	std::map<size_t, size_t> m_lowScoreAt;  //!< submap -> keyframe node of its last low-score search
 	std::list<std::pair<size_t, std::unique_ptr<TSubmapField>>> m_fieldCache;  //!< most recent first
 };
 

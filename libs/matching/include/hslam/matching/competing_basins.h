@@ -32,7 +32,8 @@ struct TCompetingBasinOptions
 };
 
 /** Adds d d^T to chosen.covariance for the farthest competing result of
- * `results` (which may contain `chosen` itself); returns whether any competed. */
+ * `results` (which may contain `chosen` itself), keeping the basin's own
+ * covariance in chosen.basin_covariance; returns whether any competed. */
 bool widenForCompetingBasins(TPoseMatch& chosen, const std::vector<TPoseMatch>& results,
 							 const TCompetingBasinOptions& options);
 

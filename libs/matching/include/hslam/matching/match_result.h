@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 
 namespace hslam::matching
@@ -32,6 +33,9 @@ struct TPoseMatch
 	/** ICP: mean Gaussian likelihood of the points at `pose` (alignment_fit.h),
 	 * which decides between the results of several seeds; 0 when not computed. */
 	double fit = 0;
+	/** Set when `covariance` was widened over competing basins
+	 * (competing_basins.h): the covariance of the chosen basin alone. */
+	std::optional<Eigen::Matrix3d> basin_covariance;
 	std::string method;  //!< what produced it, e.g. "lines", "lines:points", "icp"
 };
 

@@ -126,6 +126,9 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 												bool predictionTrusted);
 	std::optional<matching::TPoseMatch> runPointToLineIcp(const common::TRangeData& scan,
 														   const std::vector<mrpt::poses::CPose2D>& seedsWorld);
+	/** NIS of an absolute pose measurement with covariance R against the
+	 * filter's current state, without updating it. */
+	double absoluteNis(const mrpt::poses::CPose2D& z, const Eigen::Matrix3d& R) const;
 	void addKeyframeIfDue(const matching::TLineScanFrame& frame, const common::TRangeData& scan);
 	void fuse(const matching::TPoseMatch& match, bool relative, fusion::CAdaptiveMeasurementNoise& noise,
 			  TPoseEstimate& estimate);
