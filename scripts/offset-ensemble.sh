@@ -2,13 +2,15 @@
 # offset-ensemble.sh OUT RAWLOG TUM [hslam-process options...]
 #
 # Runs hslam-process on RAWLOG started at entries 0, 6, 14, 24 and 36 (cut
-# with MRPT's rawlog-edit) and prints the ATE of each start and their median.
+# with MRPT's rawlog-edit; other entries with START_ENTRIES="0 6 ... 130")
+# and prints the ATE of each start, their median, mean and worst.
 # On a real log a single run's ATE is decided by a few slips and moves 2-10x
 # under changes that should be harmless (docs/pose-estimation.md, "Reading
 # real-log figures"); the spread over start offsets shows how much of a
 # difference between two settings is noise.
 #
-#   scripts/offset-ensemble.sh out/ens-aces aces.rawlog aces.tum --set icp.engine=cached
+#   scripts/offset-ensemble.sh out/ens-aces aces.rawlog aces.tum --set icp.engine=mrpt
+#   START_ENTRIES="0 6 14 24 36 50 70 90 110 130" scripts/offset-ensemble.sh out/ens-csail csail.rawlog csail.tum
 set -euo pipefail
 [ $# -ge 3 ] || { sed -n 2,12p "$0"; exit 2; }
 out=$1; rawlog=$2; tum=$3; shift 3
@@ -18,7 +20,7 @@ bin=${HSLAM_BIN:-$here/build/bin}
 [ -f "$tum" ] || { echo "offset-ensemble: $tum: no such TUM file" >&2; exit 2; }
 mkdir -p "$out"
 ates=()
-for offset in 0 6 14 24 36; do
+for offset in ${START_ENTRIES:-0 6 14 24 36}; do
 	input=$rawlog
 	if [ "$offset" != 0 ]; then
 		input=$out/start-$offset.rawlog
@@ -31,4 +33,4 @@ for offset in 0 6 14 24 36; do
 	ates+=("$ate")
 	echo "start_entry=$offset ate_m=$ate"
 done
-printf '%s\n' "${ates[@]}" | sort -n | sed -n 3p | sed 's/^/ate_median_m=/'
+python3 -c "import statistics as s, sys; v = [float(a) for a in sys.argv[1:]]; print('ate_median_m=%.3f\nate_mean_m=%.3f\nate_worst_m=%.3f' % (s.median(v), s.mean(v), max(v)))" "${ates[@]}"
