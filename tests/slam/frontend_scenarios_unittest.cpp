@@ -111,6 +111,16 @@ TEST(FrontEndScenarios, LaserOnlyStartedWhileDrivingIsTracked)
 	const TScores widened = runDefault(shipped("laser-only"), {}, 50);
 	print("laser only, from entry 50", widened);
 	EXPECT_LT(widened.ate_m, 0.2);
+	// From entry 200 two matches were refused, then the stuck state's result
+	// fitted the only keyframe better than the refused track's and reset
+	// the count (1.80 m): a result competing with the refused track's no
+	// longer confirms the prediction.
+	const TScores track = runDefault(shipped("laser-only"), {}, 200);
+	print("laser only, from entry 200", track);
+	EXPECT_LT(track.ate_m, 0.2);
+	const TScores trackOff = runDefault(shipped("laser-only"), {"icp.competing_fit_ratio=0"}, 200);
+	print("laser only, from entry 200, no competing basins", trackOff);
+	EXPECT_GT(trackOff.ate_m, 0.5);
 	const TScores old = runDefault(
 		shipped("laser-only"), {"motion_prior.contradicting_nis=0", "pose_estimation.seed_refused_matches=false"}, 14);
 	print("laser only, from entry 14, as before", old);

@@ -6,6 +6,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <mrpt/math/wrap2pi.h>
 
 namespace hslam::slam
@@ -155,7 +156,7 @@ bool CScanMatchingPoseEstimator::betterSeedResult(const matching::TPoseMatch& la
 
 std::optional<matching::TPoseMatch> CScanMatchingPoseEstimator::runIcp(
 	const matching::TLineScanFrame& frame, const common::TRangeData& scan, const std::vector<mrpt::poses::CPose2D>& seedsWorld,
-	bool predictionTrusted)
+	bool predictionTrusted, std::vector<matching::TPoseMatch>& results)
 {
 	if (seedsWorld.empty()) return std::nullopt;
 	common::CStageTimer::CScope t(m_timer, "icp");
@@ -169,7 +170,7 @@ std::optional<matching::TPoseMatch> CScanMatchingPoseEstimator::runIcp(
 		return icp.match(m_keyframes.reference(around), frame.pointsMap, seed, m_ukf.covariance());
 	};
 	std::optional<matching::TPoseMatch> best;
-	std::vector<matching::TPoseMatch> results;
+	results.clear();
 	for (const auto& seed : seedsWorld)
 	{
 		// A later seed must pair clearly more points to replace an earlier
@@ -227,7 +228,8 @@ void CScanMatchingPoseEstimator::addKeyframeIfDue(const matching::TLineScanFrame
 }
 
 void CScanMatchingPoseEstimator::fuse(const matching::TPoseMatch& match, bool relative,
-									  fusion::CAdaptiveMeasurementNoise& noise, TPoseEstimate& estimate)
+									  fusion::CAdaptiveMeasurementNoise& noise, TPoseEstimate& estimate,
+									  const matching::TPoseMatch* refusedTrack)
 {
 	common::CStageTimer::CScope t(m_timer, "ukf");
 	const bool weak = match.quality == matching::EMatchQuality::weak;
@@ -245,7 +247,14 @@ void CScanMatchingPoseEstimator::fuse(const matching::TPoseMatch& match, bool re
 								 : m_ukf.updateAbsolute(toVec(match.pose), R, m_ukfOptions.gate_nis);
 	if (!relative && !weak)
 	{
-		if (basinNis)
+		// The scan fits the refused matches' track about as well as the
+		// prediction's: no confirmation of the prediction, and the refused
+		// track goes on (laser-only sample from entry 200: the stuck result
+		// fitted the only keyframe better and reset the count, 1.80 m).
+		if (refusedTrack)
+			m_motion.observeMatch(refusedTrack->pose, refusedTrack->covariance, false,
+								  std::numeric_limits<double>::infinity(), m_matchTime_s);
+		else if (basinNis)
 			m_motion.observeMatch(match.pose, *match.basin_covariance, *basinNis <= m_ukfOptions.gate_nis, *basinNis,
 								  m_matchTime_s);
 		else
@@ -280,6 +289,8 @@ void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, c
 						 (m_options.method == "icp" || m_options.icp_always || !lineUsable ||
 						  lineMatch->quality == EMatchQuality::weak);
 	std::optional<matching::TPoseMatch> icpMatch;
+	std::vector<matching::TPoseMatch> icpResults;  // one per seed run
+	const matching::TPoseMatch* refusedTrack = nullptr;  // its result, when it competes with the chosen one
 	if (wantIcp)
 	{
 		// Seed: the line result composed onto the previous pose, else the UKF prediction.
@@ -292,14 +303,18 @@ void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, c
 		addSeedIfNew(seeds, currentPose());
 		// where the matches the filter keeps refusing put the robot (CMotionPrior)
 		const auto refused = m_motion.contradictedMatchSeed(m_matchTime_s);
+		const size_t refusedSeed = seeds.size();
 		if (m_options.seed_refused_matches && refused) addSeedIfNew(seeds, *refused);
-		icpMatch = runIcp(frame, scan, seeds, !refused && estimate.motion_prior.empty());
+		icpMatch = runIcp(frame, scan, seeds, !refused && estimate.motion_prior.empty(), icpResults);
+		if (icpMatch && refusedSeed < icpResults.size() &&
+			matching::competesWith(*icpMatch, icpResults[refusedSeed], m_icp.options().competing))
+			refusedTrack = &icpResults[refusedSeed];
 		m_sinceIcp = mrpt::poses::CPose2D();
 		m_lastIcp_s = m_matchTime_s;
 	}
 	estimate.matched = lineMatch.has_value() || icpMatch.has_value();
 	if (icpMatch && icpMatch->quality != EMatchQuality::failed)
-		fuse(*icpMatch, false, m_icpNoise, estimate);
+		fuse(*icpMatch, false, m_icpNoise, estimate, refusedTrack);
 	else if (lineUsable && m_ukf.hasClone())
 		fuse(*lineMatch, true, m_lineNoise, estimate);
 	else if (icpMatch)

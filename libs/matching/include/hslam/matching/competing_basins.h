@@ -31,6 +31,10 @@ struct TCompetingBasinOptions
 	double min_distance_chi2 = 16.27;
 };
 
+/** Whether `other` lies in another basin than `chosen` (outside its
+ * covariance by min_distance_chi2) and fits at least fit_ratio as well. */
+bool competesWith(const TPoseMatch& chosen, const TPoseMatch& other, const TCompetingBasinOptions& options);
+
 /** Adds d d^T to chosen.covariance for the farthest competing result of
  * `results` (which may contain `chosen` itself), keeping the basin's own
  * covariance in chosen.basin_covariance; returns whether any competed. */

@@ -120,18 +120,22 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	bool betterSeedResult(const matching::TPoseMatch& later, const matching::TPoseMatch& earlier) const;
 	/** ICP from each seed (world frame, preferred first); the best result,
 	 * its covariance widened over competing basins when `predictionTrusted`
-	 * (competing_basins.h). */
+	 * (competing_basins.h). `results` receives each seed's result, in seed
+	 * order (fewer when the loop stopped early). */
 	std::optional<matching::TPoseMatch> runIcp(const matching::TLineScanFrame& frame, const common::TRangeData& scan,
 												const std::vector<mrpt::poses::CPose2D>& seedsWorld,
-												bool predictionTrusted);
+												bool predictionTrusted, std::vector<matching::TPoseMatch>& results);
 	std::optional<matching::TPoseMatch> runPointToLineIcp(const common::TRangeData& scan,
 														   const std::vector<mrpt::poses::CPose2D>& seedsWorld);
 	/** NIS of an absolute pose measurement with covariance R against the
 	 * filter's current state, without updating it. */
 	double absoluteNis(const mrpt::poses::CPose2D& z, const Eigen::Matrix3d& R) const;
 	void addKeyframeIfDue(const matching::TLineScanFrame& frame, const common::TRangeData& scan);
+	/** Updates the filter with `match`; `refusedTrack`, when set, is the
+	 * refused-match seed's result competing with it, which the motion prior
+	 * then counts as another refusal instead of the match's confirmation. */
 	void fuse(const matching::TPoseMatch& match, bool relative, fusion::CAdaptiveMeasurementNoise& noise,
-			  TPoseEstimate& estimate);
+			  TPoseEstimate& estimate, const matching::TPoseMatch* refusedTrack = nullptr);
 	mrpt::poses::CPose2D currentPose() const;
 
 	TPoseEstimationOptions m_options;
