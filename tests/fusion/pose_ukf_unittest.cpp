@@ -154,3 +154,18 @@ TEST(AdaptiveMeasurementNoise, OverconfidentMatcherIsTrustedLessAndNeverMore)
 	for (int k = 0; k < 200; ++k) a.observeNis(0.1);
 	EXPECT_DOUBLE_EQ(a.scale(), 1.0);  // min_scale
 }
+
+TEST(PoseUKF, AbsoluteNisIsTheUpdatesNisWithoutTheUpdate)
+{
+	// Hand-derived: P = diag(0.01, 0.01, 0.01), R = the same, S = 0.02 I;
+	// z = (0.1, 0, 2 pi - 0.1) is 0.1 off in x and, wrapped, -0.1 in theta:
+	// NIS = (0.01 + 0.01) / 0.02 = 1.
+	CPoseUKF ukf;
+	ukf.reset(TPoseVec(0, 0, 0), Eigen::Matrix3d::Identity() * 0.01);
+	const TPoseVec z(0.1, 0, 2 * M_PI - 0.1);
+	const Eigen::Matrix3d R = Eigen::Matrix3d::Identity() * 0.01;
+	const double nis = ukf.absoluteNis(z, R);
+	EXPECT_NEAR(nis, 1.0, 1e-9);
+	EXPECT_NEAR(ukf.pose().norm(), 0.0, 1e-12);  // the state is untouched
+	EXPECT_NEAR(ukf.updateAbsolute(z, R, 50).nis, nis, 1e-6);  // the update's own figure
+}

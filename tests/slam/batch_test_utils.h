@@ -2,6 +2,7 @@
 #pragma once
 
 #include <hslam/batch/CBatchProcessor.h>
+#include <hslam/io/carmen_import.h>
 #include <hslam/testing/test_paths.h>
 
 #include <sstream>
@@ -25,5 +26,12 @@ inline batch::TBatchResult runBatch(const std::string& input, const std::string&
 	request.show_progress = false;
 	std::ostringstream out, err;
 	return batch::CBatchProcessor(request, out, err).run();
+}
+/** ../shared/datasets/carmen/NAME-corrected.log.gz converted by our CARMEN
+ * importer into DIR/NAME.rawlog and DIR/NAME.tum (the corrected poses). */
+inline void convertCarmenReferenceLog(const std::string& name, const std::string& dir)
+{
+	io::convertCarmenLog(std::string(HSLAM_SHARED_DATASETS_DIR) + "/carmen/" + name + "-corrected.log.gz",
+						 dir + "/" + name + ".rawlog", dir + "/" + name + ".tum", io::TCarmenImportOptions());
 }
 }  // namespace hslam::slam::testing

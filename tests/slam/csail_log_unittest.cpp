@@ -18,7 +18,6 @@
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/eval/evaluate_trajectory.h>
 #include <hslam/io/CRawlogReader.h>
-#include <hslam/io/carmen_import.h>
 #include <hslam/slam/CMappingPipeline.h>
 #include <hslam/testing/temp_dir.h>
 #include <hslam/testing/test_paths.h>
@@ -35,9 +34,7 @@ class CsailLog : public ::testing::Test
 	static void SetUpTestSuite()
 	{
 		s_dir = std::make_unique<hslam::testing::CTempDir>();
-		io::convertCarmenLog(std::string(HSLAM_SHARED_DATASETS_DIR) + "/carmen/csail-corrected.log.gz",
-							 s_dir->path().string() + "/csail.rawlog", s_dir->path().string() + "/csail.tum",
-							 io::TCarmenImportOptions());
+		slam::testing::convertCarmenReferenceLog("csail", s_dir->path().string());
 	}
 	static void TearDownTestSuite() { s_dir.reset(); }
 

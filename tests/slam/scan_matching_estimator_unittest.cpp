@@ -10,7 +10,6 @@
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/eval/evaluate_trajectory.h>
 #include <hslam/io/CRawlogReader.h>
-#include <hslam/io/carmen_import.h>
 #include <hslam/slam/CMappingPipeline.h>
 #include <hslam/testing/temp_dir.h>
 #include <hslam/testing/test_paths.h>
@@ -34,8 +33,7 @@ class AcesLog : public ::testing::Test
 	static void SetUpTestSuite()
 	{
 		s_dir = std::make_unique<hslam::testing::CTempDir>();
-		io::convertCarmenLog(std::string(HSLAM_SHARED_DATASETS_DIR) + "/carmen/aces-corrected.log.gz",
-							 s_dir->path().string() + "/aces.rawlog", s_dir->path().string() + "/aces.tum", io::TCarmenImportOptions());
+		slam::testing::convertCarmenReferenceLog("aces", s_dir->path().string());
 	}
 	static void TearDownTestSuite() { s_dir.reset(); }
 

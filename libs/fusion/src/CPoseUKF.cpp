@@ -90,6 +90,13 @@ TUkfUpdateResult CPoseUKF::updateAbsolute(const TPoseVec& z, const Eigen::Matrix
 	return update(z, R, gateNis, [](const Eigen::VectorXd& x) -> Eigen::VectorXd { return x.head<3>(); });
 }
 
+double CPoseUKF::absoluteNis(const TPoseVec& z, const Eigen::Matrix3d& R) const
+{
+	TPoseVec nu = z - m_x.head<3>();
+	nu[2] = wrapToPi(nu[2]);
+	return nu.dot((covariance() + R).ldlt().solve(nu));
+}
+
 TUkfUpdateResult CPoseUKF::updateRelative(const TPoseVec& z, const Eigen::Matrix3d& R, double gateNis)
 {
 	if (!hasClone()) throw std::logic_error("CPoseUKF::updateRelative without a cloned pose");

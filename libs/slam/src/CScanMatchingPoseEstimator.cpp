@@ -3,7 +3,6 @@
 #include <hslam/matching/scan_points.h>
 #include <hslam/slam/CScanMatchingPoseEstimator.h>
 
-#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -241,7 +240,8 @@ void CScanMatchingPoseEstimator::fuse(const matching::TPoseMatch& match, bool re
 	// counted neither way). It says nothing about the matcher's calibration.
 	const std::optional<double> basinNis =
 		match.basin_covariance && !relative
-			? std::optional<double>(absoluteNis(match.pose, noise.effectiveCovariance(*match.basin_covariance, weak)))
+			? std::optional<double>(
+				  m_ukf.absoluteNis(toVec(match.pose), noise.effectiveCovariance(*match.basin_covariance, weak)))
 			: std::nullopt;
 	const auto result = relative ? m_ukf.updateRelative(toVec(match.pose), R, m_ukfOptions.gate_nis)
 								 : m_ukf.updateAbsolute(toVec(match.pose), R, m_ukfOptions.gate_nis);
@@ -265,13 +265,6 @@ void CScanMatchingPoseEstimator::fuse(const matching::TPoseMatch& match, bool re
 	estimate.match_quality = match.quality;
 	estimate.match_accepted = result.accepted;
 	estimate.match_nis = result.nis;
-}
-
-double CScanMatchingPoseEstimator::absoluteNis(const mrpt::poses::CPose2D& z, const Eigen::Matrix3d& R) const
-{
-	const fusion::TPoseVec x = m_ukf.pose();
-	const Eigen::Vector3d nu(z.x() - x[0], z.y() - x[1], mrpt::math::wrapToPi(z.phi() - x[2]));
-	return nu.dot((m_ukf.covariance() + R).inverse() * nu);
 }
 
 void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, const common::TRangeData& scan,

@@ -67,6 +67,9 @@ class CPoseUKF
 	/** Absolute pose measurement z of the current pose with covariance R.
 	 * Rejected (state unchanged) if its NIS exceeds gateNis. */
 	TUkfUpdateResult updateAbsolute(const TPoseVec& z, const Eigen::Matrix3d& R, double gateNis);
+	/** NIS an absolute measurement z with covariance R would have now
+	 * (identity measurement: S = P + R exactly), without updating. */
+	double absoluteNis(const TPoseVec& z, const Eigen::Matrix3d& R) const;
 	/** Relative measurement z = current pose expressed in the clone's frame.
 	 * Requires hasClone(). */
 	TUkfUpdateResult updateRelative(const TPoseVec& z, const Eigen::Matrix3d& R, double gateNis);

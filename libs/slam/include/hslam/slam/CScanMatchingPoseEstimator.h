@@ -127,9 +127,6 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 												bool predictionTrusted, std::vector<matching::TPoseMatch>& results);
 	std::optional<matching::TPoseMatch> runPointToLineIcp(const common::TRangeData& scan,
 														   const std::vector<mrpt::poses::CPose2D>& seedsWorld);
-	/** NIS of an absolute pose measurement with covariance R against the
-	 * filter's current state, without updating it. */
-	double absoluteNis(const mrpt::poses::CPose2D& z, const Eigen::Matrix3d& R) const;
 	void addKeyframeIfDue(const matching::TLineScanFrame& frame, const common::TRangeData& scan);
 	/** Updates the filter with `match`; `refusedTrack`, when set, is the
 	 * refused-match seed's result competing with it, which the motion prior
