@@ -127,7 +127,8 @@ TCorrelativeMatch CCorrelativeScanMatcher::match(const TPointCloud2D& rawQuery, 
 			return std::hypot(ex, ey) <= exclude->xy_m && std::abs(eyaw) <= exclude->yaw_rad;
 		};
 	const float bound = static_cast<float>(minScore < 0 ? m_options.min_score : minScore);
-	const auto found = detail::branchAndBound(m_grid, rotations, windowCells, bound, excluded);
+	const auto found =
+		detail::branchAndBound(m_grid, rotations, windowCells, bound, excluded, exclude && exclude->first_above_min_score);
 	result.nodes_scored = found.nodesScored;
 	if (!found.found) return result;
 	result.found = true;

@@ -44,40 +44,71 @@ struct TChildren
 	const TCandidate* end() const { return c.data() + n; }
 };
 
+/** Rotations are branched on too (beyond Hess et al.): a top node covers a
+ * group of 2 g + 1 consecutive rotations and a block of 2^(top - 1) offsets.
+ * The rotation step moves the farthest query point by at most one cell
+ * (chords add up), so from the group's middle rotation every point of a
+ * member rotation lies at most g cells away (g + 1 with the rounding to
+ * cells): the top level's pool of 2^top = 2^(top - 1) + 2 (g + 1) cells,
+ * read g + 1 cells before the block, bounds every member and offset. One top
+ * node replaces 2 g + 1 per-rotation ones, and a rotation is only prepared
+ * (cells split) when its group is expanded. */
+struct TGrouping
+{
+	int g = 0;  //!< half-width of a rotation group (0: no grouping)
+	int block = 1;  //!< offsets per top node and axis
+};
+
+TGrouping groupingFor(int topLevel, size_t rotationCount)
+{
+	if (topLevel < 3 || rotationCount < 3) return {0, 1 << topLevel};
+	const int block = 1 << (topLevel - 1);
+	return {block / 2 - 1, block};
+}
+
 class CSearch
 {
    public:
 	CSearch(const CMultiResolutionGrid& grid, const std::vector<TRotatedQuery>& rotations, int windowCells,
 			const std::function<bool(int, int, int)>& excluded)
-		: m_grid(grid), m_w(windowCells), m_excluded(excluded)
+		: m_grid(grid),
+		  m_queries(rotations),
+		  m_w(windowCells),
+		  m_excluded(excluded),
+		  m_group(groupingFor(grid.levelCount() - 1, rotations.size())),
+		  m_rot(rotations.size()),
+		  m_split(rotations.size(), false)
 	{
-		m_rot.reserve(rotations.size());
-		for (const auto& q : rotations) m_rot.push_back(splitQuery(grid, q, windowCells));
 	}
 
-	/** Mean level value of the query of `c.rotation` shifted by (dx, dy), 0..1. */
-	float score(const TCandidate& c)
+	/** Mean level value of the query of `c.rotation` shifted by (dx, dy), 0..1
+	 * (a group node: the bound of all its rotations and offsets). */
+	float score(const TCandidate& c, bool group = false)
 	{
 		++nodesScored;
-		const auto& q = m_rot[static_cast<size_t>(c.rotation)];
+		const auto& q = split(c.rotation);
 		if (q.count == 0) return 0.f;
-		const uint8_t* cells = m_grid.levelData(c.level) + (c.dy * m_grid.width() + c.dx);
+		const int shift = group ? m_group.g + 1 : 0, dx = c.dx - shift, dy = c.dy - shift;
+		const uint8_t* cells = m_grid.levelData(c.level) + (dy * m_grid.width() + dx);
 		unsigned sum = 0;
 		for (int f : q.flat) sum += cells[f];
-		for (size_t i = 0; i < q.cx.size(); ++i) sum += m_grid.value(c.level, q.cx[i] + c.dx, q.cy[i] + c.dy);
+		for (size_t i = 0; i < q.cx.size(); ++i) sum += m_grid.value(c.level, q.cx[i] + dx, q.cy[i] + dy);
 		return static_cast<float>(sum) / (255.f * static_cast<float>(q.count));
 	}
 
+	/** Top nodes, sorted by bound: rotation groups (rotation = the middle
+	 * one) or, without grouping, single rotations. */
 	std::vector<TCandidate> topLevel()
 	{
-		const int level = m_grid.levelCount() - 1, step = 1 << level;
+		const int level = m_grid.levelCount() - 1, n = static_cast<int>(m_queries.size());
+		const int step = m_group.g > 0 ? 2 * m_group.g + 1 : 1, first = m_group.g > 0 ? m_group.g : 0;
 		std::vector<TCandidate> out;
-		for (int r = 0; r < static_cast<int>(m_rot.size()); ++r)
-			for (int dx = -m_w; dx <= m_w; dx += step)
-				for (int dy = -m_w; dy <= m_w; dy += step)
+		for (int r = first; r - m_group.g < n; r += step)
+			for (int dx = -m_w; dx <= m_w; dx += m_group.block)
+				for (int dy = -m_w; dy <= m_w; dy += m_group.block)
 				{
-					TCandidate c{r, dx, dy, level, 0.f};
-					c.score = score(c);
+					TCandidate c{std::min(r, n - 1), dx, dy, level, 0.f};
+					c.score = score(c, m_group.g > 0);
 					out.push_back(c);
 				}
 		std::sort(out.begin(), out.end(), byScore);
@@ -86,28 +117,54 @@ class CSearch
 
 	/** Best leaf under the sorted candidates whose score beats `bound`. */
 	template <class Range>
-	TSearchResult search(const Range& candidates, float bound)
+	TSearchResult search(const Range& candidates, float bound, bool groups = false)
 	{
 		TSearchResult best;
 		best.best.score = bound;
 		for (const auto& c : candidates)
 		{
 			if (c.score <= best.best.score) break;  // sorted: nothing below can win
-			if (c.level == 0)
+			if (c.level == 0 && !groups)
 			{
 				if (m_excluded && m_excluded(c.rotation, c.dx, c.dy)) continue;
 				best.found = true, best.best = c;
+				if (m_firstAbove) return best;
 				continue;
 			}
-			const auto sub = search(children(c), best.best.score);
+			const auto sub = groups ? search(members(c), best.best.score) : search(children(c), best.best.score);
 			if (sub.found) best = sub;
+			if (sub.found && m_firstAbove) return best;
 		}
 		return best;
 	}
 
+	bool grouped() const { return m_group.g > 0; }
+	bool m_firstAbove = false;  //!< stop at the first leaf above the bound
 	size_t nodesScored = 0;
 
    private:
+	const TSplitQuery& split(int rotation)
+	{
+		const auto r = static_cast<size_t>(rotation);
+		if (!m_split[r]) m_rot[r] = splitQuery(m_grid, m_queries[r], m_w + m_group.g + 1), m_split[r] = true;
+		return m_rot[r];
+	}
+
+	/** The single rotations of a group node, at the level below, sorted. */
+	std::vector<TCandidate> members(const TCandidate& group)
+	{
+		const int n = static_cast<int>(m_queries.size());
+		std::vector<TCandidate> out;
+		for (int r = std::max(0, group.rotation - m_group.g); r <= std::min(n - 1, group.rotation + m_group.g); ++r)
+		{
+			TCandidate c{r, group.dx, group.dy, group.level - 1, 0.f};
+			c.score = score(c);
+			out.push_back(c);
+		}
+		std::stable_sort(out.begin(), out.end(), byScore);
+		return out;
+	}
+
 	TChildren children(const TCandidate& c)
 	{
 		const int half = 1 << (c.level - 1);
@@ -128,17 +185,22 @@ class CSearch
 	static bool byScore(const TCandidate& a, const TCandidate& b) { return a.score > b.score; }
 
 	const CMultiResolutionGrid& m_grid;
-	std::vector<TSplitQuery> m_rot;
+	const std::vector<TRotatedQuery>& m_queries;
 	int m_w;
 	const std::function<bool(int, int, int)>& m_excluded;
+	TGrouping m_group;
+	std::vector<TSplitQuery> m_rot;
+	std::vector<bool> m_split;
 };
 }  // namespace
 
 TSearchResult branchAndBound(const CMultiResolutionGrid& grid, const std::vector<TRotatedQuery>& rotations,
-							 int windowCells, float minScore, const std::function<bool(int, int, int)>& excluded)
+							 int windowCells, float minScore, const std::function<bool(int, int, int)>& excluded,
+							 bool firstAbove)
 {
 	CSearch s(grid, rotations, windowCells, excluded);
-	auto result = s.search(s.topLevel(), minScore);
+	s.m_firstAbove = firstAbove;
+	auto result = s.search(s.topLevel(), minScore, s.grouped());
 	result.nodesScored = s.nodesScored;
 	return result;
 }

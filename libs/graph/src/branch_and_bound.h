@@ -34,9 +34,10 @@ struct TSearchResult
 
 /** Finds the leaf (level 0) of highest score above minScore over offsets in
  * [-windowCells, windowCells]^2 for every rotation; leaves for which
- * `excluded(rotation, dx, dy)` is true are skipped. */
+ * `excluded(rotation, dx, dy)` is true are skipped. With firstAbove, the
+ * first leaf found above minScore is returned (an existence test). */
 TSearchResult branchAndBound(const CMultiResolutionGrid& grid, const std::vector<TRotatedQuery>& rotations,
-							 int windowCells, float minScore,
-							 const std::function<bool(int, int, int)>& excluded);
+							 int windowCells, float minScore, const std::function<bool(int, int, int)>& excluded,
+							 bool firstAbove = false);
 
 }  // namespace hslam::graph::detail

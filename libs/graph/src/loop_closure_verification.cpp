@@ -56,7 +56,8 @@ bool CLoopClosureDetector::checkUniqueness(const CCorrelativeScanMatcher& m, con
 										   const TCorrelativeMatch& best, TLoopClosure& out) const
 {
 	const auto guess = relativePose(out.anchor_pose, out.query_pose_estimate);
-	const TSearchExclusion near{best.pose, m_options.ambiguity_xy_m, m_options.ambiguity_yaw_rad};
+	// whether a second peak exists is all the test needs: the search stops at the first
+	const TSearchExclusion near{best.pose, m_options.ambiguity_xy_m, m_options.ambiguity_yaw_rad, true};
 	const TSearchWindow wider{c.window.xy_m * m_options.ambiguity_window_factor, c.window.yaw_rad};
 	const auto second = m.match(m_queryPoints, guess, wider, &near, m_options.ambiguity_ratio * best.score,
 								EMatchOutput::pose_only);

@@ -84,6 +84,9 @@ struct TSearchExclusion
 	mrpt::math::TPose2D centre;
 	double xy_m = 0.5;
 	double yaw_rad = mrpt::DEG2RAD(10.0);
+	/** Return the first pose found above the minimum score rather than the
+	 * best: enough to tell whether a second peak exists. */
+	bool first_above_min_score = false;
 };
 
 struct TCorrelativeMatch
