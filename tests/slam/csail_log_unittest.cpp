@@ -43,6 +43,10 @@ class CsailLog : public ::testing::Test
 	{
 		overrides.push_back("loop_closure.enabled=false");
 		overrides.push_back("icp.engine=mrpt");
+		// the configuration the two-basin case was found in: with the scan's
+		// grazing points left out this start slips elsewhere (1.06 m; the
+		// default cached engine 0.60 m), which this test is not about
+		overrides.push_back("icp.max_incidence_deg=0");
 		const auto cfg = common::loadConfigWithOverrides(slam::testing::kDefaultIni, overrides);
 		slam::CMappingPipeline pipeline(cfg);
 		io::CRawlogReader reader(s_dir->path().string() + "/csail.rawlog");

@@ -95,7 +95,10 @@ bool CScanMatchingPoseEstimator::dueForIcp() const
 matching::TLineScanFrame CScanMatchingPoseEstimator::makeFrame(const common::TRangeData& scan)
 {
 	matching::TLineScanFrame frame;
-	frame.points = scan.points.xy;
+	// the scan's points at grazing incidence are not aligned; the keyframes
+	// keep them as reference (addKeyframeIfDue), where another view's dense
+	// points of the same wall may be their partners
+	frame.points = matching::pointsOffGrazingIncidence(scan.points, m_icp.options().max_incidence_rad);
 	frame.pointsMap = matching::toPointsMap(frame.points);
 	if (usesLines())
 	{
@@ -216,14 +219,14 @@ std::optional<matching::TPoseMatch> CScanMatchingPoseEstimator::runPointToLineIc
 	return best->match;
 }
 
-void CScanMatchingPoseEstimator::addKeyframeIfDue(const matching::TLineScanFrame& frame, const common::TRangeData& scan)
+void CScanMatchingPoseEstimator::addKeyframeIfDue(const common::TRangeData& scan)
 {
 	const mrpt::poses::CPose2D pose = currentPose();
 	if (!usesIcp()) return;
 	if (usesPointToLine() && m_store.wantsKeyframe(pose))
 		m_store.add(scan.points, pose, m_ukf.covariance(), scan.t_s);
 	if (m_options.icp_matcher != "point_to_line" && m_keyframes.wantsKeyframe(pose))
-		m_keyframes.addKeyframe(pose, frame.points);
+		m_keyframes.addKeyframe(pose, scan.points.xy);
 }
 
 void CScanMatchingPoseEstimator::fuse(const matching::TPoseMatch& match, bool relative,
@@ -339,7 +342,7 @@ TPoseEstimate CScanMatchingPoseEstimator::update(const TOdometryIncrement& incre
 		matching::TLineScanFrame frame = makeFrame(scan);
 		if (m_started) matchAndFuse(frame, scan, estimate);
 		m_started = true;
-		addKeyframeIfDue(frame, scan);
+		addKeyframeIfDue(scan);
 		estimate.lines = frame.lines;
 		m_previousFrame = std::move(frame);
 		m_ukf.cloneCurrentPose();

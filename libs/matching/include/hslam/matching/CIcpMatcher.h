@@ -37,6 +37,10 @@ class CIcpMatcher
 		 * neighbours cached between iterations) on a CPointIndex2D. */
 		std::string engine = "mrpt";
 		int cached_neighbours = 4;  //!< candidates kept per scan point (engine = cached)
+		/** The scan's points seen at grazing incidence are not aligned (the
+		 * keyframes keep them as reference): pointsOffGrazingIncidence() in
+		 * scan_points.h. 0 = off. */
+		double max_incidence_rad = 0;
 		std::string algorithm = "classic";  //!< MRPT ICP_algorithm: "classic" or "levenberg_marquardt"
 		int max_iterations = 80;
 		double threshold_dist_m = 0.5;  //!< initial pairing distance (MRPT thresholdDist)
@@ -72,6 +76,7 @@ class CIcpMatcher
 		{
 			v.choice("engine", engine, {"mrpt", "cached"});
 			v.integer("cached_neighbours", cached_neighbours, 1, 16);
+			v.degrees("max_incidence_deg", max_incidence_rad, 0.0, 89.0);
 			v.choice("algorithm", algorithm, {"classic", "levenberg_marquardt"});
 			v.integer("max_iterations", max_iterations, 1, 1000);
 			v.real("threshold_dist_m", threshold_dist_m, 0.01, 10.0);

@@ -127,7 +127,7 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 												bool predictionTrusted, std::vector<matching::TPoseMatch>& results);
 	std::optional<matching::TPoseMatch> runPointToLineIcp(const common::TRangeData& scan,
 														   const std::vector<mrpt::poses::CPose2D>& seedsWorld);
-	void addKeyframeIfDue(const matching::TLineScanFrame& frame, const common::TRangeData& scan);
+	void addKeyframeIfDue(const common::TRangeData& scan);
 	/** Updates the filter with `match`; `refusedTrack`, when set, is the
 	 * refused-match seed's result competing with it, which the motion prior
 	 * then counts as another refusal instead of the match's confirmation. */
