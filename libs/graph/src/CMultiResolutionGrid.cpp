@@ -19,11 +19,15 @@ void CMultiResolutionGrid::build(const std::vector<mrpt::math::TPoint2Df>& point
 		minY = std::min(minY, p.y), maxY = std::max(maxY, p.y);
 	}
 	const int kernelCells = static_cast<int>(std::ceil(3.0 * kernelSigma_m / m_res));
-	const int margin = (1 << (levels - 1)) + kernelCells + 1;
-	m_x0 = minX - margin * m_res;
-	m_y0 = minY - margin * m_res;
-	m_width = static_cast<int>(std::ceil((maxX - minX) / m_res)) + 2 * margin + 1;
-	m_height = static_cast<int>(std::ceil((maxY - minY) / m_res)) + 2 * margin + 1;
+	// A pooled cell holds the max over [c, c + 2^level): cells below the
+	// points need the top level's block as margin, or a query cell left of the
+	// grid would read 0 where its pool reaches the points; above the points
+	// the kernel suffices (everything past the grid is 0 anyway).
+	const int high = kernelCells + 1, low = (1 << (levels - 1)) + high;
+	m_x0 = minX - low * m_res;
+	m_y0 = minY - low * m_res;
+	m_width = static_cast<int>(std::ceil((maxX - minX) / m_res)) + low + high + 1;
+	m_height = static_cast<int>(std::ceil((maxY - minY) / m_res)) + low + high + 1;
 	// A rebuilt grid (a recycled submap field) keeps its levels' storage:
 	// fresh multi-megabyte buffers cost page faults and zeroing per build.
 	m_levels.resize(static_cast<size_t>(levels));
