@@ -44,7 +44,7 @@ void CMultiResolutionGrid::stampPoints(const std::vector<mrpt::math::TPoint2Df>&
 	// exp(-d^2 / 2 sigma^2) = exp(-ex^2 / 2 sigma^2) exp(-ey^2 / 2 sigma^2):
 	// 2 (2k + 1) exponentials per point instead of (2k + 1)^2 (a submap's field
 	// build was mostly std::exp)
-	std::vector<double> gx(static_cast<size_t>(n)), gy(static_cast<size_t>(n)), ex2(static_cast<size_t>(n));
+	std::vector<double> gx(static_cast<size_t>(n)), gy(gx), ex2(gx), ey2(gx);
 	for (const auto& p : points)
 	{
 		const int cx = cellX(p.x), cy = cellY(p.y);
@@ -53,19 +53,17 @@ void CMultiResolutionGrid::stampPoints(const std::vector<mrpt::math::TPoint2Df>&
 			// distance from the point to the centre of cell (cx + d, cy + d) along each axis
 			const double ex = m_x0 + (cx + d + 0.5) * m_res - p.x, ey = m_y0 + (cy + d + 0.5) * m_res - p.y;
 			const auto i = static_cast<size_t>(d + k);
-			ex2[i] = ex * ex;
-			gx[i] = std::exp(-0.5 * ex * ex / (sigma * sigma)), gy[i] = std::exp(-0.5 * ey * ey / (sigma * sigma));
+			ex2[i] = ex * ex, ey2[i] = ey * ey;
+			gx[i] = std::exp(-0.5 * ex2[i] / (sigma * sigma)), gy[i] = std::exp(-0.5 * ey2[i] / (sigma * sigma));
 		}
-		for (int dy = -k; dy <= k; ++dy)
+		for (size_t j = 0; j < static_cast<size_t>(n); ++j)
 		{
-			const double ey = m_y0 + (cy + dy + 0.5) * m_res - p.y;
-			uint8_t* row = cells.data() + static_cast<size_t>(cy + dy) * m_width + cx;
-			for (int dx = -k; dx <= k; ++dx)
+			uint8_t* row = cells.data() + static_cast<size_t>(cy - k + static_cast<int>(j)) * m_width + (cx - k);
+			for (size_t i = 0; i < static_cast<size_t>(n); ++i)
 			{
-				if (ex2[static_cast<size_t>(dx + k)] + ey * ey > 9.0 * sigma * sigma) continue;
-				const auto v = static_cast<uint8_t>(
-					std::lround(255.0 * gx[static_cast<size_t>(dx + k)] * gy[static_cast<size_t>(dy + k)]));
-				row[dx] = std::max(row[dx], v);
+				if (ex2[i] + ey2[j] > 9.0 * sigma * sigma) continue;
+				const auto v = static_cast<uint8_t>(std::lround(255.0 * gx[i] * gy[j]));
+				row[i] = std::max(row[i], v);
 			}
 		}
 	}

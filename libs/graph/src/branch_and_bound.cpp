@@ -70,11 +70,12 @@ class CSearch
 {
    public:
 	CSearch(const CMultiResolutionGrid& grid, const std::vector<TRotatedQuery>& rotations, int windowCells,
-			const std::function<bool(int, int, int)>& excluded)
+			const std::function<bool(int, int, int)>& excluded, bool firstAbove)
 		: m_grid(grid),
 		  m_queries(rotations),
 		  m_w(windowCells),
 		  m_excluded(excluded),
+		  m_firstAbove(firstAbove),
 		  m_group(groupingFor(grid.levelCount() - 1, rotations.size())),
 		  m_rot(rotations.size()),
 		  m_split(rotations.size(), false)
@@ -107,6 +108,8 @@ class CSearch
 			for (int dx = -m_w; dx <= m_w; dx += m_group.block)
 				for (int dy = -m_w; dy <= m_w; dy += m_group.block)
 				{
+					// the last group's middle may lie past the end: it is centred on
+					// the last rotation and shares a few members with the one before
 					TCandidate c{std::min(r, n - 1), dx, dy, level, 0.f};
 					c.score = score(c, m_group.g > 0);
 					out.push_back(c);
@@ -139,7 +142,6 @@ class CSearch
 	}
 
 	bool grouped() const { return m_group.g > 0; }
-	bool m_firstAbove = false;  //!< stop at the first leaf above the bound
 	size_t nodesScored = 0;
 
    private:
@@ -188,6 +190,7 @@ class CSearch
 	const std::vector<TRotatedQuery>& m_queries;
 	int m_w;
 	const std::function<bool(int, int, int)>& m_excluded;
+	bool m_firstAbove;  //!< stop at the first leaf above the bound (an existence test)
 	TGrouping m_group;
 	std::vector<TSplitQuery> m_rot;
 	std::vector<bool> m_split;
@@ -198,8 +201,7 @@ TSearchResult branchAndBound(const CMultiResolutionGrid& grid, const std::vector
 							 int windowCells, float minScore, const std::function<bool(int, int, int)>& excluded,
 							 bool firstAbove)
 {
-	CSearch s(grid, rotations, windowCells, excluded);
-	s.m_firstAbove = firstAbove;
+	CSearch s(grid, rotations, windowCells, excluded, firstAbove);
 	auto result = s.search(s.topLevel(), minScore, s.grouped());
 	result.nodesScored = s.nodesScored;
 	return result;
