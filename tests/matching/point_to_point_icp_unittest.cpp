@@ -143,6 +143,50 @@ TEST(PointToPointIcp, AgreesWithMrptClassicIcp)
 	EXPECT_GT(ours.cached_answers, 2 * ours.tree_queries);
 }
 
+TEST(PointToPointIcp, PointsFarFromTheReferenceAreQueriedOnceAndStayUnpaired)
+{
+	// The room's scan plus 40 returns from clutter 3 m outside the room: a
+	// point whose nearest reference point was beyond its pairing limit by
+	// more than it has moved since stays unpaired without a tree query (the
+	// limits only shrink). Same pose as MRPT's CICP; exactly one tree query
+	// per far point (eight each before the rule).
+	const auto world = room(0.04);
+	const CPose2D truth(0.12, -0.07, 4 * kDeg);
+	std::vector<TPoint2D> clutter;
+	for (int i = 0; i < 40; ++i) clutter.push_back({-7.0 - 0.05 * i, 0.3 * std::sin(i)});
+	const auto roomScan = seenFrom(truth, world);
+	auto scan = roomScan;
+	for (const auto& p : seenFrom(truth, clutter)) scan.push_back(p);
+	std::vector<float> rx, ry;
+	for (const auto& p : world) rx.push_back(static_cast<float>(p.x)), ry.push_back(static_cast<float>(p.y));
+	CPointIndex2D reference;
+	reference.build(rx, ry);
+	const CPointToPointIcp icp;
+	const auto alignScan = [&](const mrpt::maps::CSimplePointsMap& m)
+	{
+		return icp.align(reference, m.getPointsBufferRef_x().data(), m.getPointsBufferRef_y().data(), m.size(),
+						 CPose2D(0, 0, 0));
+	};
+	const auto withClutter = toPointsMap(scan), without = toPointsMap(roomScan);
+	const auto ours = alignScan(withClutter), roomOnly = alignScan(without);
+
+	mrpt::slam::CICP mrptIcp;
+	mrptIcp.options.ICP_algorithm = mrpt::slam::icpClassic;
+	mrptIcp.options.corresponding_points_decimation = 1;
+	mrpt::slam::CICP::TReturnInfo info;
+	const auto worldMap = toPointsMap(world);
+	const auto theirs = mrptIcp.AlignPDF(&worldMap, &withClutter, mrpt::poses::CPosePDFGaussian(CPose2D()), info)->getMeanVal();
+	EXPECT_NEAR(ours.pose.x(), theirs.x(), 1e-4);
+	EXPECT_NEAR(ours.pose.y(), theirs.y(), 1e-4);
+	EXPECT_NEAR(ours.pose.phi(), theirs.phi(), 5e-5);
+	EXPECT_NEAR(ours.goodness, info.goodness, 1e-6);
+	// MRPT's float step test ends one iteration apart here (the pose is the
+	// same to 1e-4; so before this cache rule too).
+	EXPECT_NEAR(ours.iterations, static_cast<int>(info.nIterations), 1);
+	EXPECT_EQ(ours.pose, roomOnly.pose);  // the clutter is never paired
+	EXPECT_EQ(ours.tree_queries, roomOnly.tree_queries + clutter.size());
+}
+
 TEST(PointToPointIcp, CacheSizeDoesNotChangeTheResult)
 {
 	const auto world = room(0.03);

@@ -8,14 +8,16 @@ namespace hslam::matching
 {
 namespace
 {
-/** nanoflann result set: the k nearest points with index >= firstLive. */
+/** nanoflann result set: the k nearest points with index >= firstLive, kept
+ * sorted in (indices, distances2); a tree's index i is stored as i + offset.
+ * Searching a second tree into the same set prunes it by the first's k-th
+ * distance. */
 class CLiveKnnResult
 {
    public:
-	CLiveKnnResult(size_t k, uint32_t firstLive, uint32_t* indices, float* distances2)
-		: m_k(k), m_firstLive(firstLive), m_idx(indices), m_d2(distances2)
-	{
-	}
+	CLiveKnnResult(size_t k, uint32_t* indices, float* distances2) : m_k(k), m_idx(indices), m_d2(distances2) {}
+	/** The next tree's indices: those below firstLive are skipped, the others stored + offset. */
+	void nextTree(uint32_t firstLive, uint32_t offset) { m_firstLive = firstLive, m_offset = offset; }
 	size_t size() const { return m_count; }
 	bool full() const { return m_count == m_k; }
 	float worstDist() const { return full() ? m_d2[m_k - 1] : std::numeric_limits<float>::max(); }
@@ -24,13 +26,13 @@ class CLiveKnnResult
 		if (index < m_firstLive || (full() && d2 >= m_d2[m_k - 1])) return true;
 		size_t i = full() ? m_k - 1 : m_count++;
 		for (; i > 0 && m_d2[i - 1] > d2; --i) m_d2[i] = m_d2[i - 1], m_idx[i] = m_idx[i - 1];
-		m_d2[i] = d2, m_idx[i] = index;
+		m_d2[i] = d2, m_idx[i] = index + m_offset;
 		return true;
 	}
 
    private:
 	size_t m_k, m_count = 0;
-	uint32_t m_firstLive;
+	uint32_t m_firstLive = 0, m_offset = 0;
 	uint32_t* m_idx;
 	float* m_d2;
 };
@@ -75,22 +77,12 @@ size_t CPointIndex2D::nearest(float x, float y, size_t k, uint32_t* indices, flo
 	k = std::min<size_t>(k, 32);
 	if (k == 0) return 0;
 	const float query[2] = {x, y};
-	CLiveKnnResult bulk(k, static_cast<uint32_t>(m_firstLive), indices, distances2);
-	if (m_bulkTree && m_firstLive < bulkSize()) m_bulkTree->findNeighbors(bulk, query, nanoflann::SearchParams());
-	if (!m_recentTree) return bulk.size();
-	uint32_t idx[32];
-	float d2[32];
-	CLiveKnnResult recent(k, 0, idx, d2);
-	m_recentTree->findNeighbors(recent, query, nanoflann::SearchParams());
-	// Merge into the bulk result (both sorted; recent indices follow the bulk's).
-	CLiveKnnResult merged(k, 0, indices, distances2);
-	uint32_t bulkIdx[32];
-	float bulkD2[32];
-	const size_t nb = bulk.size();
-	std::copy(indices, indices + nb, bulkIdx), std::copy(distances2, distances2 + nb, bulkD2);
-	for (size_t i = 0; i < nb; ++i) merged.addPoint(bulkD2[i], bulkIdx[i]);
-	for (size_t i = 0; i < recent.size(); ++i) merged.addPoint(d2[i], idx[i] + static_cast<uint32_t>(bulkSize()));
-	return merged.size();
+	CLiveKnnResult result(k, indices, distances2);
+	result.nextTree(static_cast<uint32_t>(m_firstLive), 0);
+	if (m_bulkTree && m_firstLive < bulkSize()) m_bulkTree->findNeighbors(result, query, nanoflann::SearchParams());
+	result.nextTree(0, static_cast<uint32_t>(bulkSize()));
+	if (m_recentTree) m_recentTree->findNeighbors(result, query, nanoflann::SearchParams());
+	return result.size();
 }
 
 }  // namespace hslam::matching

@@ -18,22 +18,34 @@ class CNeighbourCache
    public:
 	CNeighbourCache(const CPointIndex2D& reference, size_t points, int k)
 		: m_ref(reference), m_k(static_cast<size_t>(std::max(1, k))), m_qx(points), m_qy(points),
-		  m_radius(points, -1.0f), m_idx(points * m_k), m_count(points, 0)
+		  m_radius(points, -1.0f), m_nearest(points, 0.0f), m_idx(points * m_k), m_count(points, 0)
 	{
 	}
 
-	/** Exact nearest reference point of scan point i, now at (x, y). */
-	uint32_t nearest(size_t i, float x, float y, float& d2, CPointToPointIcp::TResult& stats)
+	/** Nearest reference point of scan point i, now at (x, y): exact when
+	 * it is within limit_m; otherwise d2 may be any value >= limit_m^2 (the
+	 * point is unpaired either way). */
+	uint32_t nearest(size_t i, float x, float y, float limit_m, float& d2, CPointToPointIcp::TResult& stats)
 	{
 		if (m_radius[i] >= 0)
 		{
-			const float moved = std::hypot(x - m_qx[i], y - m_qy[i]);
+			const float dx = x - m_qx[i], dy = y - m_qy[i];
+			const float moved = std::sqrt(dx * dx + dy * dy);
+			// Nothing was within nearest_m of the last query point: nothing is
+			// within nearest_m - moved now (triangle inequality), and since
+			// pairing limits only shrink, a point that far stays unpaired.
+			if (m_nearest[i] - moved >= limit_m)
+			{
+				++stats.cached_answers;
+				d2 = limit_m * limit_m;
+				return 0;
+			}
 			uint32_t best = 0;
 			float bestD2 = std::numeric_limits<float>::max();
 			for (size_t j = 0; j < m_count[i]; ++j)
 			{
 				const uint32_t c = m_idx[i * m_k + j];
-				const float dx = m_ref.x(c) - x, dy = m_ref.y(c) - y, dd = dx * dx + dy * dy;
+				const float ex = m_ref.x(c) - x, ey = m_ref.y(c) - y, dd = ex * ex + ey * ey;
 				if (dd < bestD2) bestD2 = dd, best = c;
 			}
 			// No uncached point is nearer than radius - moved (triangle inequality).
@@ -50,6 +62,7 @@ class CNeighbourCache
 		m_count[i] = m_ref.nearest(x, y, k, &m_idx[i * m_k], dist2);
 		m_qx[i] = x, m_qy[i] = y;
 		m_radius[i] = m_count[i] < k ? std::numeric_limits<float>::max() : std::sqrt(dist2[m_count[i] - 1]);
+		m_nearest[i] = m_count[i] > 0 ? std::sqrt(dist2[0]) : std::numeric_limits<float>::max();
 		d2 = m_count[i] > 0 ? dist2[0] : std::numeric_limits<float>::max();
 		return m_count[i] > 0 ? m_idx[i * m_k] : 0;
 	}
@@ -57,7 +70,7 @@ class CNeighbourCache
    private:
 	const CPointIndex2D& m_ref;
 	size_t m_k;
-	std::vector<float> m_qx, m_qy, m_radius;
+	std::vector<float> m_qx, m_qy, m_radius, m_nearest;
 	std::vector<uint32_t> m_idx;
 	std::vector<size_t> m_count;
 };
@@ -75,10 +88,12 @@ struct TThresholds
 	int offset;
 };
 
-/** Pairs of the scan at `pose` (MRPT determineMatching2D semantics); returns
- * the fraction of scan points with a pair before the unique filter. */
-double pairPoints(const float* xs, const float* ys, size_t n, const mrpt::poses::CPose2D& pose, const TThresholds& t, int decimation, CNeighbourCache& cache,
-				  std::vector<TPair>& pairs, CPointToPointIcp::TResult& stats)
+/** Pairs of the scan at `pose` (MRPT determineMatching2D semantics; a
+ * point's pairing distance grows with its range, ranges_m[i]); returns the
+ * fraction of scan points with a pair before the unique filter. */
+double pairPoints(const float* xs, const float* ys, const float* ranges_m, size_t n, const mrpt::poses::CPose2D& pose,
+				  const TThresholds& t, int decimation, CNeighbourCache& cache, std::vector<TPair>& pairs,
+				  CPointToPointIcp::TResult& stats)
 {
 	pairs.clear();
 	const float c = static_cast<float>(std::cos(pose.phi())), s = static_cast<float>(std::sin(pose.phi()));
@@ -87,21 +102,30 @@ double pairPoints(const float* xs, const float* ys, size_t n, const mrpt::poses:
 	for (size_t i = static_cast<size_t>(t.offset); i < n; i += static_cast<size_t>(decimation))
 	{
 		const float x = px + c * xs[i] - s * ys[i], y = py + s * xs[i] + c * ys[i];
+		const float limit = static_cast<float>(t.ang_rad * ranges_m[i] + t.dist_m);
 		float d2 = 0;
-		const uint32_t r = cache.nearest(i, x, y, d2, stats);
-		const double limit = t.ang_rad * std::hypot(x - px, y - py) + t.dist_m;
+		const uint32_t r = cache.nearest(i, x, y, limit, d2, stats);
 		if (d2 < limit * limit) pairs.push_back({r, static_cast<uint32_t>(i), d2}), ++withPair;
 	}
 	return static_cast<double>(decimation) * static_cast<double>(withPair) / static_cast<double>(n);
 }
 
-/** Keeps, for every reference point, only its closest pair. */
-void keepUniquePairs(std::vector<TPair>& pairs)
+/** Keeps, for every reference point, only its closest pair (in O(pairs):
+ * slotOfRef, one entry per reference point, is left all-empty again). */
+void keepUniquePairs(std::vector<TPair>& pairs, std::vector<uint32_t>& slotOfRef)
 {
-	std::sort(pairs.begin(), pairs.end(),
-			  [](const TPair& a, const TPair& b) { return a.ref != b.ref ? a.ref < b.ref : a.d2 < b.d2; });
-	pairs.erase(std::unique(pairs.begin(), pairs.end(), [](const TPair& a, const TPair& b) { return a.ref == b.ref; }),
-				pairs.end());
+	constexpr uint32_t kEmpty = std::numeric_limits<uint32_t>::max();
+	size_t kept = 0;
+	for (const TPair& p : pairs)
+	{
+		uint32_t& slot = slotOfRef[p.ref];
+		if (slot == kEmpty)
+			slot = static_cast<uint32_t>(kept), pairs[kept++] = p;
+		else if (p.d2 < pairs[slot].d2)
+			pairs[slot] = p;
+	}
+	pairs.resize(kept);
+	for (const TPair& p : pairs) slotOfRef[p.ref] = kEmpty;
 }
 
 /** Closed-form least-squares SE(2) taking the scan points onto their pairs. */
@@ -139,16 +163,19 @@ CPointToPointIcp::TResult CPointToPointIcp::align(const CPointIndex2D& reference
 	CNeighbourCache cache(reference, n, o.cached_neighbours);
 	TThresholds t{o.threshold_dist_m, o.threshold_ang_rad, 0};
 	std::vector<TPair> pairs;
+	std::vector<uint32_t> slotOfRef(o.only_unique_robust ? reference.size() : 0, std::numeric_limits<uint32_t>::max());
+	std::vector<float> ranges_m(n);
+	for (size_t i = 0; i < n; ++i) ranges_m[i] = std::hypot(xs[i], ys[i]);
 	mrpt::poses::CPose2D last;
 	bool keepApproaching = true;
 	do
 	{
-		result.goodness = pairPoints(xs, ys, n, result.pose, t, o.decimation, cache, pairs, result);
+		result.goodness = pairPoints(xs, ys, ranges_m.data(), n, result.pose, t, o.decimation, cache, pairs, result);
 		if (pairs.empty())
 			keepApproaching = false;
 		else
 		{
-			if (o.only_unique_robust) keepUniquePairs(pairs);
+			if (o.only_unique_robust) keepUniquePairs(pairs, slotOfRef);
 			result.pose = fitPose(reference, xs, ys, pairs);
 			if (stoppedMoving(last, result.pose, o.min_step_m, o.min_step_rad))
 			{
