@@ -147,8 +147,7 @@ TEST(PointToPointIcp, PointsFarFromTheReferenceAreQueriedOnceAndStayUnpaired)
 {
 	// The room's scan plus 40 returns from clutter 3 m outside the room: a
 	// point whose nearest reference point was beyond its pairing limit by
-	// more than it has moved since stays unpaired without a tree query (the
-	// limits only shrink). Same pose as MRPT's CICP; exactly one tree query
+	// more than it has moved since stays unpaired without a tree query. Same pose as MRPT's CICP; exactly one tree query
 	// per far point (eight each before the rule).
 	const auto world = room(0.04);
 	const CPose2D truth(0.12, -0.07, 4 * kDeg);

@@ -31,9 +31,9 @@ class CNeighbourCache
 		{
 			const float dx = x - m_qx[i], dy = y - m_qy[i];
 			const float moved = std::sqrt(dx * dx + dy * dy);
-			// Nothing was within nearest_m of the last query point: nothing is
-			// within nearest_m - moved now (triangle inequality), and since
-			// pairing limits only shrink, a point that far stays unpaired.
+			// Nothing was within nearest_m of the last query point, so nothing
+			// is within nearest_m - moved now (triangle inequality): when that
+			// is at least the pairing limit, the point is unpaired.
 			if (m_nearest[i] - moved >= limit_m)
 			{
 				++stats.cached_answers;

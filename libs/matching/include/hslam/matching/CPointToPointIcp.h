@@ -12,7 +12,12 @@
  *    k-th candidate at the last query), no other reference point can be
  *    nearer (triangle inequality), so the answer is exact without a tree
  *    query. Most ICP iterations move points by millimetres: most queries are
- *    answered from the cache.
+ *    answered from the cache. Likewise, a point whose nearest reference
+ *    point was r_1 away is unpaired while r_1 - delta is at least its
+ *    pairing limit (clutter, parts of the room the reference never saw):
+ *    one tree query, then none;
+ *  - unique pairs are found in one pass over the pairs (a slot per
+ *    reference point), not by sorting them.
  *
  * Used by CIcpMatcher (engine = cached) in the default front-end (issue 12,
  * "Speed"). No I/O. */
