@@ -45,6 +45,7 @@ CPointToPointIcp::TOptions toCached(const CIcpMatcher::TOptions& o)
 	c.only_unique_robust = o.only_unique_robust;
 	c.decimation = o.decimation;
 	c.cached_neighbours = o.cached_neighbours;
+	c.stage_step_fraction = o.stage_step_fraction;
 	return c;
 }
 }  // namespace

@@ -177,7 +177,11 @@ CPointToPointIcp::TResult CPointToPointIcp::align(const CPointIndex2D& reference
 		{
 			if (o.only_unique_robust) keepUniquePairs(pairs, slotOfRef);
 			result.pose = fitPose(reference, xs, ys, pairs);
-			if (stoppedMoving(last, result.pose, o.min_step_m, o.min_step_rad))
+			// A stage that is not the last one only has to bring the pose
+			// near its fixed point: the next, tighter pairing refines it.
+			const bool lastStage = t.dist_m * o.alfa < o.smallest_threshold_dist_m;
+			const double tol = lastStage ? 0.0 : o.stage_step_fraction * t.dist_m;
+			if (stoppedMoving(last, result.pose, std::max(o.min_step_m, tol), std::max(o.min_step_rad, tol)))
 			{
 				t.dist_m *= o.alfa, t.ang_rad *= o.alfa;
 				if (t.dist_m < o.smallest_threshold_dist_m) keepApproaching = false;

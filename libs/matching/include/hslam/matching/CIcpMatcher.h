@@ -37,6 +37,7 @@ class CIcpMatcher
 		 * neighbours cached between iterations) on a CPointIndex2D. */
 		std::string engine = "mrpt";
 		int cached_neighbours = 4;  //!< candidates kept per scan point (engine = cached)
+		double stage_step_fraction = 0.01;  //!< engine = cached: coarse stages end early (0 = MRPT's rule)
 		/** The scan's points seen at grazing incidence are not aligned (the
 		 * keyframes keep them as reference): pointsOffGrazingIncidence() in
 		 * scan_points.h. 0 = off. */
@@ -76,6 +77,7 @@ class CIcpMatcher
 		{
 			v.choice("engine", engine, {"mrpt", "cached"});
 			v.integer("cached_neighbours", cached_neighbours, 1, 16);
+			v.real("stage_step_fraction", stage_step_fraction, 0.0, 1.0);
 			v.degrees("max_incidence_deg", max_incidence_rad, 0.0, 89.0);
 			v.choice("algorithm", algorithm, {"classic", "levenberg_marquardt"});
 			v.integer("max_iterations", max_iterations, 1, 1000);

@@ -17,7 +17,12 @@
  *    pairing limit (clutter, parts of the room the reference never saw):
  *    one tree query, then none;
  *  - unique pairs are found in one pass over the pairs (a slot per
- *    reference point), not by sorting them.
+ *    reference point), not by sorting them;
+ *  - optionally (stage_step_fraction > 0), a pairing stage other than the
+ *    last ends once a step is below that fraction of its pairing distance:
+ *    MRPT iterates every stage to 1e-6, though the next, tighter stage
+ *    refines the pose anyway (iterations on the CARMEN logs 37 -> 23 per
+ *    call at 0.01). 0 keeps MRPT's semantics exactly.
  *
  * Used by CIcpMatcher (engine = cached) in the default front-end (issue 12,
  * "Speed"). No I/O. */
@@ -45,6 +50,7 @@ class CPointToPointIcp
 		bool only_unique_robust = true;  //!< each reference point keeps only its closest pair
 		int decimation = 1;  //!< every k-th scan point, offset rotating per threshold step
 		int cached_neighbours = 4;  //!< candidates kept per scan point between tree queries
+		double stage_step_fraction = 0;  //!< a non-final stage ends at steps below this x its pairing distance
 	};
 
 	struct TResult
