@@ -34,7 +34,8 @@ class CIcpMatcher
 	{
 		/** "mrpt": mrpt::slam::CICP on a CSimplePointsMap reference; "cached":
 		 * CPointToPointIcp (the same classic algorithm, exact nearest
-		 * neighbours cached between iterations) on a CPointIndex2D. */
+		 * neighbours cached between iterations; with stage_step_fraction > 0
+		 * its coarse stages end early) on a CPointIndex2D. */
 		std::string engine = "mrpt";
 		int cached_neighbours = 4;  //!< candidates kept per scan point (engine = cached)
 		double stage_step_fraction = 0.01;  //!< engine = cached: coarse stages end early (0 = MRPT's rule)
