@@ -34,6 +34,21 @@ std::vector<float> bruteForce(const std::vector<float>& xs, const std::vector<fl
 	return d2;
 }
 
+/** MRPT's classic ICP with the same settings as `o`. */
+mrpt::slam::CICP mrptClassicIcp(const CPointToPointIcp::TOptions& o)
+{
+	mrpt::slam::CICP icp;
+	icp.options.ICP_algorithm = mrpt::slam::icpClassic;
+	icp.options.maxIterations = static_cast<unsigned>(o.max_iterations);
+	icp.options.thresholdDist = o.threshold_dist_m;
+	icp.options.thresholdAng = o.threshold_ang_rad;
+	icp.options.ALFA = o.alfa;
+	icp.options.smallestThresholdDist = o.smallest_threshold_dist_m;
+	icp.options.onlyUniqueRobust = o.only_unique_robust;
+	icp.options.corresponding_points_decimation = static_cast<uint32_t>(o.decimation);
+	return icp;
+}
+
 void addWall(std::vector<TPoint2D>& points, TPoint2D a, TPoint2D b, double step_m)
 {
 	const int n = static_cast<int>(std::lround(std::hypot(b.x - a.x, b.y - a.y) / step_m));
@@ -117,15 +132,7 @@ TEST(PointToPointIcp, AgreesWithMrptClassicIcp)
 	const auto ours = icp.align(reference, current.getPointsBufferRef_x().data(), current.getPointsBufferRef_y().data(),
 								current.size(), seed);
 
-	mrpt::slam::CICP mrptIcp;
-	mrptIcp.options.ICP_algorithm = mrpt::slam::icpClassic;
-	mrptIcp.options.maxIterations = o.max_iterations;
-	mrptIcp.options.thresholdDist = o.threshold_dist_m;
-	mrptIcp.options.thresholdAng = o.threshold_ang_rad;
-	mrptIcp.options.ALFA = o.alfa;
-	mrptIcp.options.smallestThresholdDist = o.smallest_threshold_dist_m;
-	mrptIcp.options.onlyUniqueRobust = o.only_unique_robust;
-	mrptIcp.options.corresponding_points_decimation = 1;
+	mrpt::slam::CICP mrptIcp = mrptClassicIcp(o);
 	mrpt::slam::CICP::TReturnInfo info;
 	const auto worldMap = toPointsMap(world);
 	const auto pdf = mrptIcp.AlignPDF(&worldMap, &current,
@@ -171,9 +178,7 @@ TEST(PointToPointIcp, PointsFarFromTheReferenceAreQueriedOnceAndStayUnpaired)
 	const auto withClutter = toPointsMap(scan), without = toPointsMap(roomScan);
 	const auto ours = alignScan(withClutter), roomOnly = alignScan(without);
 
-	mrpt::slam::CICP mrptIcp;
-	mrptIcp.options.ICP_algorithm = mrpt::slam::icpClassic;
-	mrptIcp.options.corresponding_points_decimation = 1;
+	mrpt::slam::CICP mrptIcp = mrptClassicIcp(icp.options());
 	mrpt::slam::CICP::TReturnInfo info;
 	const auto worldMap = toPointsMap(world);
 	const auto theirs = mrptIcp.AlignPDF(&worldMap, &withClutter, mrpt::poses::CPosePDFGaussian(CPose2D()), info)->getMeanVal();

@@ -146,6 +146,23 @@ mrpt::poses::CPose2D fitPose(const CPointIndex2D& ref, const float* xs, const fl
 	return {mrx - (c * msx - s * msy), mry - (s * msx + c * msy), phi};
 }
 
+struct TStepLimits
+{
+	double m, rad;
+};
+
+/** Step below which the current pairing stage ends. A stage that is not the
+ * last one only has to bring the pose near its fixed point (the next,
+ * tighter pairing refines it): stage_step_fraction x its pairing distance,
+ * the same number in radians for the rotation (1 rad counted as 1 m: 5 mm
+ * and 0.29 deg at the first stage). The last stage keeps MRPT's limits. */
+TStepLimits stageStepLimits(const CPointToPointIcp::TOptions& o, const TThresholds& t)
+{
+	const bool lastStage = t.dist_m * o.alfa < o.smallest_threshold_dist_m;
+	const double early = lastStage ? 0.0 : o.stage_step_fraction * t.dist_m;
+	return {std::max(o.min_step_m, early), std::max(o.min_step_rad, early)};
+}
+
 bool stoppedMoving(const mrpt::poses::CPose2D& a, const mrpt::poses::CPose2D& b, double stepM, double stepRad)
 {
 	return !(std::abs(a.x() - b.x()) > stepM || std::abs(a.y() - b.y()) > stepM ||
@@ -177,11 +194,8 @@ CPointToPointIcp::TResult CPointToPointIcp::align(const CPointIndex2D& reference
 		{
 			if (o.only_unique_robust) keepUniquePairs(pairs, slotOfRef);
 			result.pose = fitPose(reference, xs, ys, pairs);
-			// A stage that is not the last one only has to bring the pose
-			// near its fixed point: the next, tighter pairing refines it.
-			const bool lastStage = t.dist_m * o.alfa < o.smallest_threshold_dist_m;
-			const double tol = lastStage ? 0.0 : o.stage_step_fraction * t.dist_m;
-			if (stoppedMoving(last, result.pose, std::max(o.min_step_m, tol), std::max(o.min_step_rad, tol)))
+			const TStepLimits step = stageStepLimits(o, t);
+			if (stoppedMoving(last, result.pose, step.m, step.rad))
 			{
 				t.dist_m *= o.alfa, t.ang_rad *= o.alfa;
 				if (t.dist_m < o.smallest_threshold_dist_m) keepApproaching = false;
