@@ -29,6 +29,8 @@ struct TScores
 {
 	double ate_m = 0, rpe5_m = 0;  //!< estimate: ATE RMSE, RPE over 5 m (translation RMSE)
 	double odometry_ate_m = 0, odometry_rpe5_m = 0;
+	double odometry_scale = 1;  //!< [odometry_self_calibration]'s fitted distance scale
+	bool odometry_scale_applied = false;
 };
 
 double rpe5(const eval::TTrajectoryErrors& e)
@@ -54,7 +56,9 @@ TScores runDefault(const std::string& folder, const std::vector<std::string>& ov
 	const auto truth = common::readTumFile(folder + "/ground_truth.tum");
 	const auto est = eval::evaluateTrajectory(truth, pipeline.trajectory());
 	const auto odo = eval::evaluateTrajectory(truth, pipeline.odometryTrajectory());
-	return {est.ate.position_m.rmse, rpe5(est), odo.ate.position_m.rmse, rpe5(odo)};
+	const auto& calibration = pipeline.odometryCalibration().state();
+	return {est.ate.position_m.rmse, rpe5(est),		odo.ate.position_m.rmse,
+			rpe5(odo),				 calibration.distance_scale, calibration.correction.enabled};
 }
 
 std::string shipped(const std::string& name) { return std::string(HSLAM_SOURCE_DIR) + "/rawlog_samples/" + name; }
@@ -180,6 +184,31 @@ TEST(FrontEndScenarios, LongRangeLaserDownACorridorIsNotPinnedByGrazingPoints)
 	EXPECT_GT(mrptRule.ate_m, 0.4);  // measured 0.742 m: this test can fail
 	EXPECT_LT(grazingOut.ate_m, 0.15);  // measured 0.043 m
 	EXPECT_LT(byDefault.ate_m, 0.25 * byDefault.odometry_ate_m);
+}
+
+TEST(FrontEndScenarios, WornTyresAreCalibratedOutByMatching)
+{
+	// The floor sample with wheels 5 % smaller than nominal (Borenstein's
+	// Es = 0.95): odometry overstates every distance by 5 %, and where the
+	// corridors leave the axis to odometry the fused estimate inherits it.
+	// [odometry_self_calibration] fits the scale from the accepted matches
+	// and applies it; with exact odometry it stays within the front-end's
+	// own bias and is not applied.
+	hslam::testing::CTempDir dir;
+	const auto worn = simulated("floor", dir, "--set robot.es_wheel_scale_ratio=0.95");
+	const TScores calibrated = runDefault(worn);
+	const TScores uncalibrated = runDefault(worn, {"odometry_self_calibration.enabled=false"});
+	print("floor, worn tyres, calibrated", calibrated);
+	print("floor, worn tyres, not calibrated", uncalibrated);
+	std::cout << "fitted distance scale " << calibrated.odometry_scale << " (truth 0.95)\n";
+	EXPECT_TRUE(calibrated.odometry_scale_applied);
+	EXPECT_LT(calibrated.odometry_scale, 0.985);  // measured 0.97x: the match leaves part to odometry
+	EXPECT_GT(uncalibrated.ate_m, 0.8);  // measured 1.02 m: this test can fail
+	EXPECT_LT(calibrated.ate_m, 0.7 * uncalibrated.ate_m);  // measured 0.55 m
+	hslam::testing::CTempDir exactDir;
+	const TScores exact = runDefault(simulated("floor", exactDir));
+	EXPECT_FALSE(exact.odometry_scale_applied) << "fitted " << exact.odometry_scale;
+	EXPECT_NEAR(exact.odometry_scale, 1.0, 0.006);  // measured 0.998
 }
 
 TEST(FrontEndScenarios, OpenHallIsBetterThanOdometry)

@@ -21,6 +21,22 @@
 
 namespace hslam::batch
 {
+namespace
+{
+/** The odometry self-calibration's fit, as the model and as UMBmark factors. */
+void printOdometryCalibration(const calib::COdometrySelfCalibration& calibration, std::ostream& out)
+{
+	if (!calibration.enabled()) return;
+	const auto& st = calibration.state();
+	out << "Odometry self-calibration ([odometry_self_calibration]): " << st.intervals << " intervals over "
+		<< st.travel_m << " m (" << st.outliers << " outliers); distance x" << st.distance_scale << ", heading x"
+		<< st.heading_scale << ", curvature " << st.curvature_bias_rad_per_m * 180.0 / M_PI
+		<< " deg/m = c_L " << st.correction.left_factor << ", c_R " << st.correction.right_factor << ", Eb "
+		<< st.correction.wheelbase_ratio
+		<< (st.correction.enabled ? " (applied)" : " (not applied: within the front-end's own bias)") << "\n";
+}
+}  // namespace
+
 CBatchProcessor::CBatchProcessor(TBatchRequest request, std::ostream& out, std::ostream& err)
 	: m_request(std::move(request)), m_out(out), m_err(err)
 {
@@ -127,6 +143,7 @@ void CBatchProcessor::printSummary(const slam::CMappingPipeline& pipeline, const
 	m_out << "Tiles:            " << pipeline.grid().tileCount() << " (" << pipeline.grid().memoryBytes() / 1024
 		  << " KiB)\n";
 	printMatchSummary(pipeline);
+	printOdometryCalibration(pipeline.odometryCalibration(), m_out);
 	if (pipeline.loopClosureStage())
 	{
 		printLoopClosureTiming(*pipeline.loopClosureStage(), m_out);

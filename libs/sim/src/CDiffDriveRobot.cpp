@@ -29,8 +29,9 @@ CDiffDriveRobot::CDiffDriveRobot(const TDiffDriveOptions& options, const mrpt::m
 	: m_opts(options), m_true(start), m_odom(start), m_correction(options.odometry_correction)
 {
 	const double ed = m_opts.ed_wheel_diameter_ratio;
-	m_leftScale = 2.0 / (ed + 1.0);
-	m_rightScale = 2.0 * ed / (ed + 1.0);
+	const double es = m_opts.es_wheel_scale_ratio;
+	m_leftScale = es * 2.0 / (ed + 1.0);
+	m_rightScale = es * 2.0 * ed / (ed + 1.0);
 }
 
 namespace

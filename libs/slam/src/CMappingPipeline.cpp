@@ -18,7 +18,7 @@ common::TTimedPose2D timedPose(const mrpt::obs::CObservation& obs, const mrpt::p
 std::vector<std::string> CMappingPipeline::sections()
 {
 	std::vector<std::string> s{"process", "grid", "laser_model", "pose_estimation", "dynamic_objects",
-							   "sonar_model", "tbf", "vision", "odometry_correction", "graph", "loop_closure"};
+							   "sonar_model", "tbf", "vision", "odometry_correction", "odometry_self_calibration", "graph", "loop_closure"};
 	for (const auto& e : CScanMatchingPoseEstimator::sections()) s.push_back(e);
 	for (const auto& e : CLocalMapPoseEstimator::sections())
 		if (std::find(s.begin(), s.end(), e) == s.end()) s.push_back(e);
@@ -57,6 +57,8 @@ CMappingPipeline::CMappingPipeline(const mrpt::config::CConfigFileBase& cfg)
 	  m_dynamicStage(m_laserInserter, createDynamicFilter(m_dynamicOptions)),
 	  m_estimator(createPoseEstimator(m_poseOptions, cfg, m_timer)),
 	  m_odometry(common::loadedOptions<calib::TOdometryCorrection>(cfg, "odometry_correction")),
+	  m_odometryCalibration(common::loadedOptions<calib::TOdometrySelfCalibration>(cfg, "odometry_self_calibration"),
+							m_odometry.correction().nominal_wheelbase_m),
 	  m_loopOptions(common::loadedOptions<TLoopClosureStageOptions>(cfg, "loop_closure")),
 	  m_graphOptions(common::loadedOptions<graph::TGraphBackendOptions>(cfg, "graph"))
 {
@@ -78,6 +80,7 @@ void CMappingPipeline::saveOptions(mrpt::config::CConfigFileBase& out) const
 	common::saveOptions(m_laserInserter.options(), out, "laser_model");
 	common::saveOptions(m_poseOptions, out, "pose_estimation");
 	common::saveOptions(m_odometry.correction(), out, "odometry_correction");
+	common::saveOptions(m_odometryCalibration.calibration().options(), out, "odometry_self_calibration");
 	if (m_localMapDefaults) m_localMapDefaults->saveOptions(out);  // sections of the other front-end
 	m_estimator->saveOptions(out);
 	common::saveOptions(m_dynamicOptions, out, "dynamic_objects");
@@ -168,7 +171,9 @@ void CMappingPipeline::processScan(const mrpt::obs::CObservation2DRangeScan& sca
 	{
 		common::CStageTimer::CScope t(m_timer, "pose_estimation");
 		onPeople = peopleBeforeMatching(rangeData, increment);
-		estimate = m_estimator->update(increment, rangeData, onPeople.empty() ? nullptr : &onPeople);
+		estimate = m_estimator->update(m_odometryCalibration.correct(increment), rangeData,
+									   onPeople.empty() ? nullptr : &onPeople);
+		m_odometryCalibration.observe(increment, estimate);
 	}
 	const mrpt::poses::CPose2D pose = estimate.pose;
 	const TDynamicMapUpdate& update = filterDynamicObjects(scan, pose);
@@ -233,7 +238,7 @@ void CMappingPipeline::processSonar(const mrpt::obs::CObservationRange& obs)
 		++m_counters.other_observations;
 		return;
 	}
-	const TOdometryIncrement pending = m_odometry.pendingIncrement();
+	const TOdometryIncrement pending = m_odometryCalibration.correct(m_odometry.pendingIncrement());
 	if ((!m_processOptions.sonar_label.empty() && obs.sensorLabel != m_processOptions.sonar_label) || !pending.known)
 	{
 		++m_counters.sonar_observations_ignored;

@@ -36,6 +36,10 @@ struct TDiffDriveOptions
 	double wheel_diameter_m = 0.195;  //!< nominal wheel diameter (P3-DX 195 mm)
 	double ed_wheel_diameter_ratio = 1.0;  //!< UMBmark Ed = D_R/D_L (eq. 27 d); 1 = no error
 	double eb_wheelbase_ratio = 1.0;  //!< UMBmark Eb = b_actual/b_nominal; 1 = no error
+	/** Borenstein's scaling error Es = actual / nominal mean wheel diameter
+	 * (worn or under-inflated tyres, a wrong nominal diameter): odometry
+	 * over- or under-states every distance by 1/Es. UMBmark does not see it. */
+	double es_wheel_scale_ratio = 1.0;
 	double wheel_noise_m_per_sqrt_m = 0.0;  //!< k_wheel: std of a wheel's travel error after 1 m
 	double rotation_noise_rad_per_sqrt_rad = 0.0;  //!< k_rot: heading std after 1 rad of rotation
 	double max_speed_mps = 1.2;  //!< clamp of |v| (P3-DX top speed 1.2 m/s)
@@ -53,6 +57,7 @@ struct TDiffDriveOptions
 		v.real("wheel_diameter_m", wheel_diameter_m, 0.01, 1.0);
 		v.real("ed_wheel_diameter_ratio", ed_wheel_diameter_ratio, 0.9, 1.1);
 		v.real("eb_wheelbase_ratio", eb_wheelbase_ratio, 0.9, 1.1);
+		v.real("es_wheel_scale_ratio", es_wheel_scale_ratio, 0.9, 1.1);
 		v.real("wheel_noise_m_per_sqrt_m", wheel_noise_m_per_sqrt_m, 0.0, 0.2);
 		v.real("rotation_noise_rad_per_sqrt_rad", rotation_noise_rad_per_sqrt_rad, 0.0, 0.5);
 		v.real("max_speed_mps", max_speed_mps, 0.01, 2.2);

@@ -36,6 +36,7 @@
 #include <hslam/maps/CTiledOccupancyGrid.h>
 #include <hslam/slam/CDynamicMappingStage.h>
 #include <hslam/slam/CLoopClosureStage.h>
+#include <hslam/slam/COdometryCalibrationStage.h>
 #include <hslam/slam/COdometryTracker.h>
 #include <hslam/slam/CScanArchive.h>
 #include <hslam/slam/CPoseEstimator.h>
@@ -113,6 +114,7 @@ class CMappingPipeline
 	const CLoopClosureStage* loopClosureStage() const { return m_loop.get(); }
 	/** finish() rebuilt the grid from the optimised graph. */
 	bool mapRerendered() const { return m_mapRerendered; }
+	const calib::COdometrySelfCalibration& odometryCalibration() const { return m_odometryCalibration.calibration(); }
 	/** Dead-reckoning pose at each scan (same timestamps), for comparison. */
 	const common::TTrajectory2D& odometryTrajectory() const { return m_odometryTrajectory; }
 	common::CStageTimer& timer() { return m_timer; }
@@ -191,6 +193,7 @@ class CMappingPipeline
 	std::unique_ptr<CPoseEstimator> m_estimator;
 	std::unique_ptr<CPoseEstimator> m_localMapDefaults;  //!< unused estimator whose options config_used.ini records
 	COdometryTracker m_odometry;
+	COdometryCalibrationStage m_odometryCalibration;  //!< [odometry_self_calibration]
 	mrpt::poses::CPose2D m_deadReckoningPose;
 	common::TTrajectory2D m_trajectory, m_odometryTrajectory;
 	std::vector<TTimedEstimate> m_estimates;

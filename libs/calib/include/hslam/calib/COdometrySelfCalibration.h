@@ -1,0 +1,107 @@
+/* hslam calib: estimates the odometry's systematic errors online, from the
+ * pose estimator's own results, and corrects the increments it is fed.
+ *
+ * Why: the UKF (thesis 4.5) treats odometry errors as zero-mean noise, but a
+ * real robot's odometry is biased: a mean wheel diameter unlike the nominal
+ * one (Borenstein's scaling error Es) or unequal wheels and a wrong wheelbase
+ * (UMBmark's Ed and Eb, thesis 4.1). Where scan matching constrains the
+ * motion only weakly (corridors, clutter) the fused estimate follows the
+ * prediction, so a biased odometry leaks into the trajectory: on intel the
+ * odometry overstates distance by 5 % and the fused steps kept 1.6 % of it,
+ * a map 1.1 % too large (docs/pose-estimation.md, "Odometry self-calibration").
+ *
+ * Model, per interval between two accepted matches (odometry increment o,
+ * fused increment m, both in the robot frame at the interval's start):
+ *     distance   |m| = a |o|                       (a = Es for the distance)
+ *     heading    m_phi = b o_phi + c s_o           (b = 1/Eb, c from Ed)
+ * fitted by weighted least squares, each interval weighted by 1 / its wheel
+ * travel (odometry error is a random walk in the travelled distance), with
+ * the nominal calibration (a = b = 1, c = 0) as a prior worth
+ * `prior_travel_m` of travel. The fit is turned into UMBmark factors
+ * (c_L, c_R, Eb of eq. 25-28) and applied with COdometryCorrection.
+ *
+ * The fused increments lean towards the corrected odometry, which is the
+ * fixed point being estimated: the fit converges on the calibration that
+ * the matches support and stays put where they support none. */
+#pragma once
+
+#include <hslam/calib/COdometryCorrection.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <cmath>
+
+namespace hslam::calib
+{
+struct TOdometrySelfCalibration
+{
+	bool enabled = true;
+	bool estimate_heading = false;  //!< also fit b and c (UMBmark heading terms); measured worse, see docs
+	double prior_travel_m = 10.0;  //!< weight of the nominal calibration, in metres of travel
+	double max_scale_error = 0.1;  //!< factors stay within 1 +- this (TOdometryCorrection's range)
+	/** The correction is applied only once the fitted distance scale has
+	 * departed from nominal by more than this (and stays applied after):
+	 * the front-end's own distance bias (point ICP sticks to its seed along
+	 * walls) is up to 1.3 % on the simulated samples, whose odometry is
+	 * exact, and the fit cannot tell a smaller odometry error from it. */
+	double min_scale_error = 0.01;
+	double max_interval_m = 2.0;  //!< longer intervals (after failed matches) are not used
+	double max_distance_residual = 0.25;  //!< |m| - a|o| beyond this fraction of |o| (+ 2 cm): outlier
+	double max_heading_residual_rad = 5.0 * M_PI / 180.0;  //!< heading disagreement beyond this: outlier
+
+	template <class V>
+	void visit(V& v)
+	{
+		v.flag("enabled", enabled);
+		v.flag("estimate_heading", estimate_heading);
+		v.real("prior_travel_m", prior_travel_m, 0.1, 1e6);
+		v.real("max_scale_error", max_scale_error, 0.0, 0.1);
+		v.real("min_scale_error", min_scale_error, 0.0, 0.1);
+		v.real("max_interval_m", max_interval_m, 0.05, 100.0);
+		v.real("max_distance_residual", max_distance_residual, 0.01, 10.0);
+		v.degrees("max_heading_residual_deg", max_heading_residual_rad, 0.1, 180.0);
+	}
+};
+
+/** What the fit says, in the model's terms and as UMBmark factors. */
+struct TOdometrySelfCalibrationState
+{
+	double distance_scale = 1.0;  //!< a: matched / odometric distance
+	double heading_scale = 1.0;  //!< b: matched / odometric heading change (1 / Eb)
+	double curvature_bias_rad_per_m = 0.0;  //!< c: heading gained per metre driven (Ed)
+	double travel_m = 0.0;  //!< odometric distance of the intervals used
+	size_t intervals = 0, outliers = 0;
+	/** The same as c_L, c_R, Eb; enabled (applied) once the distance scale
+	 * has left 1 +- min_scale_error. */
+	TOdometryCorrection correction;
+};
+
+class COdometrySelfCalibration
+{
+   public:
+	COdometrySelfCalibration() = default;
+	/** `nominalWheelbase_m` only converts the fit to UMBmark factors. */
+	COdometrySelfCalibration(const TOdometrySelfCalibration& options, double nominalWheelbase_m);
+
+	bool enabled() const { return m_opts.enabled; }
+	const TOdometrySelfCalibration& options() const { return m_opts; }
+	const TOdometrySelfCalibrationState& state() const { return m_state; }
+
+	/** `odometry` corrected with the current fit (unchanged when disabled). */
+	mrpt::poses::CPose2D correct(const mrpt::poses::CPose2D& odometry) const;
+
+	/** One interval between accepted matches: the uncorrected odometry
+	 * increment and the estimator's fused increment over the same time. */
+	void observe(const mrpt::poses::CPose2D& odometry, const mrpt::poses::CPose2D& fused);
+
+   private:
+	void refit();
+
+	TOdometrySelfCalibration m_opts;
+	double m_wheelbase_m = 0.335;
+	// Weighted sums of the distance fit and of the 2x2 heading fit.
+	double m_sumMatchedDistance = 0, m_sumOdometryDistance = 0;
+	double m_hh = 0, m_hs = 0, m_ss = 0, m_hy = 0, m_sy = 0;
+	TOdometrySelfCalibrationState m_state;
+};
+
+}  // namespace hslam::calib

@@ -1,0 +1,126 @@
+/* hslam tests: COdometrySelfCalibration on hand-derived intervals: the
+ * distance scale and UMBmark factors it fits, its prior, its outlier test. */
+#include <gtest/gtest.h>
+#include <hslam/calib/COdometrySelfCalibration.h>
+
+#include <cmath>
+#include <random>
+
+using namespace hslam::calib;
+using mrpt::poses::CPose2D;
+
+namespace
+{
+TOdometrySelfCalibration options(bool heading = false, double prior_m = 10.0)
+{
+	TOdometrySelfCalibration o;
+	o.estimate_heading = heading;
+	o.prior_travel_m = prior_m;
+	o.min_scale_error = 0;  // applied at once (the band has its own test)
+	return o;
+}
+}  // namespace
+
+TEST(OdometrySelfCalibration, FitsTheDistanceScaleWithThePriorAsTravel)
+{
+	// Odometry reports 0.5 m where the robot drove 0.475 m (Es = 0.95). The
+	// fit is (sum of matched distance + prior) / (sum of odometric distance +
+	// prior) with unit weights per metre: after 40 m against a 10 m prior,
+	// (38 + 10) / (40 + 10) = 0.96.
+	COdometrySelfCalibration c(options(), 0.335);
+	for (int i = 0; i < 80; ++i) c.observe(CPose2D(0.5, 0, 0), CPose2D(0.475, 0, 0));
+	EXPECT_NEAR(c.state().distance_scale, 48.0 / 50.0, 1e-9);
+	EXPECT_NEAR(c.state().travel_m, 40.0, 1e-9);
+	EXPECT_EQ(c.state().intervals, 80u);
+	// Applied: both wheels scaled by a, the heading untouched.
+	const CPose2D corrected = c.correct(CPose2D(1.0, 0, 0));
+	EXPECT_NEAR(corrected.x(), 0.96, 1e-9);
+	EXPECT_NEAR(corrected.phi(), 0.0, 1e-12);
+	EXPECT_NEAR(c.state().correction.left_factor, 0.96, 1e-9);
+	EXPECT_NEAR(c.state().correction.right_factor, 0.96, 1e-9);
+	// Reversing counts the same way (signed distances).
+	for (int i = 0; i < 80; ++i) c.observe(CPose2D(-0.5, 0, 0), CPose2D(-0.475, 0, 0));
+	EXPECT_NEAR(c.state().distance_scale, (76.0 + 10.0) / (80.0 + 10.0), 1e-9);
+}
+
+TEST(OdometrySelfCalibration, KeepsTheNominalCalibrationWithoutEvidence)
+{
+	COdometrySelfCalibration c(options(), 0.335);
+	EXPECT_DOUBLE_EQ(c.state().distance_scale, 1.0);
+	const CPose2D step(0.3, 0.02, 0.1);
+	EXPECT_EQ(c.correct(step), step) << "nothing fitted yet: identity";
+	// Turning on the spot says nothing about the distance scale.
+	for (int i = 0; i < 50; ++i) c.observe(CPose2D(0, 0, 0.5), CPose2D(0, 0, 0.45));
+	EXPECT_NEAR(c.state().distance_scale, 1.0, 1e-12);
+	// Disabled: never corrects.
+	auto off = options();
+	off.enabled = false;
+	COdometrySelfCalibration d(off, 0.335);
+	d.observe(CPose2D(0.5, 0, 0), CPose2D(0.4, 0, 0));
+	EXPECT_EQ(d.state().intervals, 0u);
+	EXPECT_EQ(d.correct(step), step);
+}
+
+TEST(OdometrySelfCalibration, RejectsIntervalsTheModelCannotExplain)
+{
+	// A wheel slipping on a threshold (the odometry says 0.5 m, the robot
+	// stood still) or a long interval after failed matches: not evidence.
+	COdometrySelfCalibration c(options(), 0.335);
+	for (int i = 0; i < 20; ++i) c.observe(CPose2D(0.5, 0, 0), CPose2D(0.5 * 0.97, 0, 0));
+	const double before = c.state().distance_scale;
+	c.observe(CPose2D(0.5, 0, 0), CPose2D(0.0, 0, 0));  // residual 0.5 > 0.25 * 0.5 + 0.02
+	c.observe(CPose2D(5.0, 0, 0), CPose2D(4.0, 0, 0));  // beyond max_interval_m = 2
+	EXPECT_EQ(c.state().outliers, 1u);
+	EXPECT_EQ(c.state().intervals, 20u);
+	EXPECT_DOUBLE_EQ(c.state().distance_scale, before);
+	// The factors stay inside TOdometryCorrection's range however far the data go.
+	for (int i = 0; i < 2000; ++i) c.observe(CPose2D(0.5, 0, 0), CPose2D(0.5 * 0.85, 0, 0));
+	EXPECT_DOUBLE_EQ(c.state().distance_scale, 0.9);
+}
+
+TEST(OdometrySelfCalibration, RecoversUmbmarkFactorsFromArcs)
+{
+	// A robot with c_L = 0.97, c_R = 0.99 and Eb = 1.02 (the truth) driving
+	// random arcs: the nominal odometry is integrated with factors 1; the
+	// "fused" increments are the true arcs with 1 mm / 0.05 deg noise.
+	const double b = 0.335, cL = 0.97, cR = 0.99, Eb = 1.02;
+	TOdometryCorrection truth;
+	truth.enabled = true, truth.left_factor = cL, truth.right_factor = cR, truth.wheelbase_ratio = Eb;
+	const COdometryCorrection actual(truth);
+	COdometrySelfCalibration c(options(true, 1.0), b);
+	std::mt19937 rng(3);
+	std::uniform_real_distribution<double> ds(0.05, 0.6), dphi(-0.6, 0.6);
+	std::normal_distribution<double> n(0, 1);
+	for (int i = 0; i < 2000; ++i)
+	{
+		const CPose2D nominal = arcIncrement(ds(rng), dphi(rng));
+		const CPose2D moved = actual.correctIncrement(nominal);
+		c.observe(nominal, CPose2D(moved.x() + 1e-3 * n(rng), moved.y() + 1e-3 * n(rng),
+								   moved.phi() + 0.05 * M_PI / 180 * n(rng)));
+	}
+	const auto& f = c.state().correction;
+	EXPECT_NEAR(f.left_factor, cL, 0.003);
+	EXPECT_NEAR(f.right_factor, cR, 0.003);
+	EXPECT_NEAR(f.wheelbase_ratio, Eb, 0.003);
+	EXPECT_EQ(c.state().outliers, 0u);
+}
+
+TEST(OdometrySelfCalibration, AppliesOnlyScaleErrorsBeyondTheFrontEndsOwnBias)
+{
+	// A 1 % disagreement (the front-end's own bias on exact odometry) is
+	// fitted but not applied; a 5 % one is, and stays applied.
+	auto o = options();
+	o.min_scale_error = 0.02;
+	COdometrySelfCalibration c(o, 0.335);
+	const CPose2D step(0.5, 0, 0);
+	for (int i = 0; i < 400; ++i) c.observe(step, CPose2D(0.495, 0, 0));
+	EXPECT_NEAR(c.state().distance_scale, (198.0 + 10.0) / 210.0, 1e-9);
+	EXPECT_FALSE(c.state().correction.enabled);
+	EXPECT_EQ(c.correct(step), step);
+	for (int i = 0; i < 400; ++i) c.observe(step, CPose2D(0.475, 0, 0));
+	EXPECT_TRUE(c.state().correction.enabled);
+	EXPECT_NEAR(c.correct(step).x(), 0.5 * c.state().distance_scale, 1e-9);
+	for (int i = 0; i < 4000; ++i) c.observe(step, CPose2D(0.495, 0, 0));
+	EXPECT_GT(c.state().distance_scale, 0.98);
+	EXPECT_TRUE(c.state().correction.enabled) << "once detected, the calibration stays applied";
+}
