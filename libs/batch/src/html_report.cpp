@@ -47,7 +47,9 @@ void writeSummaryTable(std::ostream& h, const TRunSummary& s)
 	  << figureRow("tiles", "tiles", std::to_string(s.tiles))
 	  << figureRow("leg tracks", "leg_tracks", std::to_string(s.leg_tracks))
 	  << figureRow("person tracks", "person_tracks", std::to_string(s.person_tracks))
-	  << figureRow("TBF sonar corners", "sonar_corners", std::to_string(s.sonar_corners));
+	  << figureRow("TBF sonar corners", "sonar_corners", std::to_string(s.sonar_corners))
+	  << figureRow("odometry distance scale (self-calibration)", "odometry_distance_scale",
+				   number(s.odometry_distance_scale, "%.4f") + (s.odometry_scale_applied ? ", applied" : ", not applied"));
 	if (s.evaluation && !s.evaluation->ate.position_m.empty())
 		h << figureRow("ATE RMSE (m)", "ate_rmse_m", number(s.evaluation->ate.position_m.rmse, "%.4f"));
 	h << "</table>\n";

@@ -74,6 +74,8 @@ TRunSummary summarizeRun(const slam::CMappingPipeline& pipeline, const TBatchReq
 	s.sonar_corners = pipeline.sonarStage().corners().size();
 	countMatches(pipeline, s);
 	countTracks(pipeline, s);
+	s.odometry_distance_scale = pipeline.odometryCalibration().state().distance_scale;
+	s.odometry_scale_applied = pipeline.odometryCalibration().state().correction.enabled;
 	s.wall_s = wall_s;
 	s.ms_per_scan = s.scans > 0 ? wall_s * 1000.0 / static_cast<double>(s.scans) : 0.0;
 	s.input_error = result.input_error;
@@ -104,6 +106,8 @@ std::string runSummaryToJson(const TRunSummary& s)
 		{"sonar_corners", std::to_string(s.sonar_corners)},
 		{"leg_tracks", std::to_string(s.leg_tracks)},
 		{"person_tracks", std::to_string(s.person_tracks)},
+		{"odometry_distance_scale", jsonNumber(s.odometry_distance_scale, "%.5f")},
+		{"odometry_scale_applied", s.odometry_scale_applied ? "true" : "false"},
 		{"wall_s", jsonNumber(s.wall_s, "%.3f")},
 		{"ms_per_scan", jsonNumber(s.ms_per_scan, "%.3f")},
 		{"input_error", s.input_error.empty() ? "null" : jsonString(s.input_error)},

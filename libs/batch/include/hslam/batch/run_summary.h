@@ -6,6 +6,8 @@
  * mrpt_version, pose_method, entries, scans, scans_ignored, odometry_gaps,
  * sonar_observations, tiles, sonar_corners, leg_tracks and person_tracks
  * (tracks confirmed at least once),
+ * odometry_distance_scale and odometry_scale_applied ([odometry_self_calibration]'s
+ * fit and whether it corrected the odometry),
  * wall_s (whole run, outputs included), ms_per_scan (wall_s per scan),
  * input_error (null if the whole input was read), evaluated, ate_rmse_m,
  * ate_mean_m, ate_max_m, matched_poses (null without a reference),
@@ -27,6 +29,8 @@ struct TRunSummary
 	size_t entries = 0, scans = 0, scans_ignored = 0, odometry_gaps = 0, sonar_observations = 0;
 	size_t tiles = 0, sonar_corners = 0, leg_tracks = 0, person_tracks = 0;
 	size_t matches = 0, matches_failed = 0, matches_rejected = 0;
+	double odometry_distance_scale = 1;  //!< fitted by [odometry_self_calibration]
+	bool odometry_scale_applied = false;  //!< the fit corrected the odometry
 	double wall_s = 0;
 	double ms_per_scan = 0;  //!< wall_s * 1000 / scans (0 without scans)
 	std::string input_error;  //!< empty when the whole input was read
