@@ -57,8 +57,8 @@ TScores runDefault(const std::string& folder, const std::vector<std::string>& ov
 	const auto est = eval::evaluateTrajectory(truth, pipeline.trajectory());
 	const auto odo = eval::evaluateTrajectory(truth, pipeline.odometryTrajectory());
 	const auto& calibration = pipeline.odometryCalibration().state();
-	return {est.ate.position_m.rmse, rpe5(est),		odo.ate.position_m.rmse,
-			rpe5(odo),				 calibration.distance_scale, calibration.correction.enabled};
+	return {est.ate.position_m.rmse,	 rpe5(est), odo.ate.position_m.rmse, rpe5(odo),
+			calibration.distance_scale, calibration.correction.enabled};
 }
 
 std::string shipped(const std::string& name) { return std::string(HSLAM_SOURCE_DIR) + "/rawlog_samples/" + name; }

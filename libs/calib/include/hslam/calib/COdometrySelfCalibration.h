@@ -39,10 +39,12 @@ struct TOdometrySelfCalibration
 	double prior_travel_m = 10.0;  //!< weight of the nominal calibration, in metres of travel
 	double max_scale_error = 0.1;  //!< factors stay within 1 +- this (TOdometryCorrection's range)
 	/** The correction is applied only once the fitted distance scale has
-	 * departed from nominal by more than this (and stays applied after):
-	 * the front-end's own distance bias (point ICP sticks to its seed along
-	 * walls) is up to 1.3 % on the simulated samples, whose odometry is
-	 * exact, and the fit cannot tell a smaller odometry error from it. */
+	 * departed from nominal by more than this (and stays applied after).
+	 * The front-end has a distance bias of its own (point ICP sticks to its
+	 * seed along walls): on the simulated samples, whose odometry is exact,
+	 * the fit stays within 0.56 % of 1 while nothing is applied, but once
+	 * applied it feeds back to 0.987-0.993 and makes them worse; the fit
+	 * cannot tell an odometry error that small from that bias. */
 	double min_scale_error = 0.01;
 	double max_interval_m = 2.0;  //!< longer intervals (after failed matches) are not used
 	double max_distance_residual = 0.25;  //!< |m| - a|o| beyond this fraction of |o| (+ 2 cm): outlier
@@ -78,7 +80,6 @@ struct TOdometrySelfCalibrationState
 class COdometrySelfCalibration
 {
    public:
-	COdometrySelfCalibration() = default;
 	/** `nominalWheelbase_m` only converts the fit to UMBmark factors. */
 	COdometrySelfCalibration(const TOdometrySelfCalibration& options, double nominalWheelbase_m);
 

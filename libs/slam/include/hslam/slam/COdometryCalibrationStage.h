@@ -19,7 +19,6 @@ namespace hslam::slam
 class COdometryCalibrationStage
 {
    public:
-	COdometryCalibrationStage() = default;
 	COdometryCalibrationStage(const calib::TOdometrySelfCalibration& options, double nominalWheelbase_m)
 		: m_calibration(options, nominalWheelbase_m)
 	{
