@@ -169,3 +169,27 @@ TEST(PoseUKF, AbsoluteNisIsTheUpdatesNisWithoutTheUpdate)
 	EXPECT_NEAR(ukf.pose().norm(), 0.0, 1e-12);  // the state is untouched
 	EXPECT_NEAR(ukf.updateAbsolute(z, R, 50).nis, nis, 1e-6);  // the update's own figure
 }
+
+TEST(PoseUKF, InflatedPredictionPassesTheGateAndKeepsTheCloneCorrelation)
+{
+	// Hand-derived: P = 0.01 I and R = 0.01 I give S = 0.02 I; z = 0.3 off in
+	// x: NIS = 0.09 / 0.02 = 4.5. Inflated 4x, S = 0.05 I and NIS = 1.8. The
+	// clone's cross-covariance (P_cc, equal to P after cloning) grows by 2x.
+	CPoseUKF ukf;
+	ukf.reset(TPoseVec(0, 0, 0), Eigen::Matrix3d::Identity() * 0.01);
+	ukf.cloneCurrentPose();
+	const TPoseVec z(0.3, 0, 0);
+	const Eigen::Matrix3d R = Eigen::Matrix3d::Identity() * 0.01;
+	EXPECT_NEAR(ukf.absoluteNis(z, R), 4.5, 1e-9);
+	EXPECT_FALSE(ukf.updateAbsolute(z, R, 3.0).accepted);
+	ukf.inflateCurrentPoseCovariance(4.0);
+	EXPECT_NEAR(ukf.covariance()(0, 0), 0.04, 1e-9);  // + the eigenvalue floor
+	EXPECT_NEAR(ukf.absoluteNis(z, R), 1.8, 1e-6);
+	ukf.inflateCurrentPoseCovariance(0.5);  // never shrinks
+	EXPECT_NEAR(ukf.covariance()(0, 0), 0.04, 1e-9);  // + the eigenvalue floor
+	const auto r = ukf.updateAbsolute(z, R, 3.0);
+	ASSERT_TRUE(r.accepted);
+	EXPECT_NEAR(ukf.pose()[0], 0.3 * 0.04 / 0.05, 1e-6);  // Kalman gain 0.8
+	// The clone moved with the correlation: P_cc / P_c = 0.02 / 0.04 of the correction.
+	EXPECT_NEAR(ukf.clonePose()[0], 0.3 * 0.02 / 0.05, 1e-6);
+}

@@ -2,7 +2,10 @@
 #include <gtest/gtest.h>
 #include <hslam/sim/CDiffDriveRobot.h>
 #include <hslam/sim/CPathFollower.h>
+#include <hslam/sim/COdometryFault.h>
+#include <mrpt/core/bits_math.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace hslam::sim;
@@ -138,4 +141,28 @@ TEST(SimKinematics, ScriptsAndWaypointListsParseWithClearErrors)
 		EXPECT_NE(std::string(e.what()).find("[path] waypoints: item 2"), std::string::npos) << e.what();
 	}
 	EXPECT_THROW(parseVelocityScript("1 2", "c"), std::runtime_error);
+}
+
+TEST(SimOdometryFault, LagReportsThePoseOfFaultLagSecondsEarlier)
+{
+	// Hand-derived: the encoder moves 0.1 m and 1 deg per 10 ms step; with a
+	// 0.305 s lag the reading at step k reports the newest encoder pose at
+	// least that old, step k - 31 (the start pose until then); once the
+	// window ends, the encoder pose itself.
+	hslam::sim::TOdometryFaultOptions o;
+	o.fault = "lag";
+	o.fault_lag_s = 0.305;
+	o.fault_duration_s = 1.0;
+	hslam::sim::COdometryFault fault(o, mrpt::math::TPose2D(1, 2, 0));
+	auto encoderAt = [](int step) { return mrpt::math::TPose2D(1 + 0.1 * step, 2, mrpt::DEG2RAD(1.0 * step)); };
+	for (int step = 0; step <= 50; ++step)
+	{
+		fault.update(0.01 * step, encoderAt(step));
+		const auto reported = fault.reportedPose();
+		const int expected = std::max(0, step - 31);
+		EXPECT_NEAR(reported.x, encoderAt(expected).x, 1e-9) << "step " << step;
+		EXPECT_NEAR(reported.phi, encoderAt(expected).phi, 1e-9) << "step " << step;
+	}
+	for (int step = 51; step <= 120; ++step) fault.update(0.01 * step, encoderAt(step));
+	EXPECT_NEAR(fault.reportedPose().x, encoderAt(120).x, 1e-9);  // after the window: the encoder pose
 }

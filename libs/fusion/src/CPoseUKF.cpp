@@ -4,6 +4,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
+#include <cmath>
 #include <stdexcept>
 
 namespace hslam::fusion
@@ -19,6 +20,19 @@ void CPoseUKF::reset(const TPoseVec& pose, const Eigen::Matrix3d& cov)
 {
 	m_x = pose;
 	m_P = cov;
+	keepPositiveDefinite();
+}
+
+void CPoseUKF::inflateCurrentPoseCovariance(double factor)
+{
+	if (!(factor > 1.0)) return;
+	const double root = std::sqrt(factor);
+	m_P.topLeftCorner<3, 3>() *= factor;
+	if (hasClone())
+	{
+		m_P.topRightCorner<3, 3>() *= root;
+		m_P.bottomLeftCorner<3, 3>() *= root;
+	}
 	keepPositiveDefinite();
 }
 

@@ -1,4 +1,4 @@
-/* hslam sim: COdometryFault (frozen or missing odometry readings). */
+/* hslam sim: COdometryFault (frozen, missing or late odometry readings). */
 #include <hslam/sim/COdometryFault.h>
 
 namespace hslam::sim
@@ -16,7 +16,7 @@ bool COdometryFault::active(double elapsed_s) const
 
 mrpt::math::TTwist2D COdometryFault::reportedVelocity(double elapsed_s, const mrpt::math::TTwist2D& encoder) const
 {
-	if (!active(elapsed_s)) return encoder;
+	if (!active(elapsed_s) || m_opts.fault == "lag") return encoder;  // lag: the velocity is not what is tested
 	const double s = m_opts.fault_motion_scale;
 	return mrpt::math::TTwist2D{s * encoder.vx, s * encoder.vy, s * encoder.omega};
 }
@@ -24,6 +24,14 @@ mrpt::math::TTwist2D COdometryFault::reportedVelocity(double elapsed_s, const mr
 void COdometryFault::update(double elapsed_s, const mrpt::math::TPose2D& encoderPose)
 {
 	const mrpt::poses::CPose2D encoder(encoderPose);
+	if (m_opts.fault == "lag")
+	{  // the newest stored pose at least fault_lag_s old (the first one before that)
+		m_history.emplace_back(elapsed_s, encoder);
+		while (m_history.size() > 1 && m_history[1].first <= elapsed_s - m_opts.fault_lag_s) m_history.pop_front();
+		m_reported = active(elapsed_s) ? m_history.front().second : encoder;
+		m_lastEncoder = encoder;
+		return;
+	}
 	if (active(elapsed_s))
 	{
 		m_faultSeen = true;

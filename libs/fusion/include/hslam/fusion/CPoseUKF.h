@@ -60,6 +60,12 @@ class CPoseUKF
 	 * covariance incrementCov in the robot frame (odometry noise model). */
 	void predict(const TPoseVec& increment, const Eigen::Matrix3d& incrementCov);
 
+	/** Scales the current pose's covariance by `factor` (>= 1) and its
+	 * correlation with the clone by sqrt(factor): the prediction is declared
+	 * less certain than the motion model said (a refused match the scan
+	 * shows to be right, CScanMatchingPoseEstimator). */
+	void inflateCurrentPoseCovariance(double factor);
+
 	/** Stores the current pose as the anchor of the next relative measurement. */
 	void cloneCurrentPose();
 	bool hasClone() const { return m_x.size() == 6; }

@@ -10,7 +10,12 @@
  *   fault = drop    no odometry readings at all during the window (the sink
  *                   is told, so a writer can mark the gap as our CARMEN
  *                   importer does with an ODOMETRY_GAP comment).
- * In both cases the motion of the window is lost for good: after the window
+ *   fault = lag     each reading reports the encoder pose of fault_lag_s
+ *                   earlier (odometry stamped late against the laser, as in
+ *                   real logs whose two clocks disagree: at a fast turn the
+ *                   step between two scans misses much of the rotation and
+ *                   the next step has it). The window's motion is not lost.
+ * With freeze and drop the motion of the window is lost for good: after the window
  * the readings continue from the last reported pose with the new encoder
  * increments (a jump against the truth), as the CARMEN importer's odometry
  * chain does across a gap. Deterministic (no random numbers). With
@@ -21,7 +26,9 @@
 #include <mrpt/math/TTwist2D.h>
 #include <mrpt/poses/CPose2D.h>
 
+#include <deque>
 #include <string>
+#include <utility>
 
 namespace hslam::sim
 {
@@ -31,14 +38,16 @@ struct TOdometryFaultOptions  //!< [odometry] fault_* keys
 	double fault_start_s = 0;  //!< elapsed time the fault begins (s)
 	double fault_duration_s = 0;  //!< length of the fault (s); 0 = until the end of the run
 	double fault_motion_scale = 0;  //!< freeze: fraction of each encoder increment still reported (0 = frozen)
+	double fault_lag_s = 0;  //!< lag: age of the encoder pose each reading reports (s)
 
 	template <class V>
 	void visit(V& v)
 	{
-		v.choice("fault", fault, {"none", "freeze", "drop"});
+		v.choice("fault", fault, {"none", "freeze", "drop", "lag"});
 		v.real("fault_start_s", fault_start_s, 0.0, 1e6);
 		v.real("fault_duration_s", fault_duration_s, 0.0, 1e6);
 		v.real("fault_motion_scale", fault_motion_scale, 0.0, 1.0);
+		v.real("fault_lag_s", fault_lag_s, 0.0, 10.0);
 	}
 };
 
@@ -65,6 +74,7 @@ class COdometryFault
 	mrpt::poses::CPose2D m_reported, m_lastEncoder;
 	mrpt::poses::CPose2D m_reportedFromEncoder;  //!< after a fault: reported = this (+) encoder
 	bool m_faultSeen = false;
+	std::deque<std::pair<double, mrpt::poses::CPose2D>> m_history;  //!< lag: encoder poses of the last fault_lag_s
 };
 
 }  // namespace hslam::sim

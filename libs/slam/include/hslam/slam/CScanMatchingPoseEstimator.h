@@ -44,6 +44,7 @@
 #include <hslam/slam/CMotionPrior.h>
 #include <hslam/slam/CPoseEstimator.h>
 
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -74,6 +75,15 @@ struct TUkfSectionOptions
 	double gate_nis = 50.0;
 	double unknown_motion_xy_std_m = 1.0;  //!< odometry gap: std of the unknown translation
 	double unknown_motion_theta_std_rad = 30.0 * M_PI / 180.0;  //!< odometry gap: std of the unknown rotation
+	/** A well-constrained ICP match beyond the gate is taken, with the
+	 * prediction's covariance widened until it passes, when the scan refutes
+	 * the prediction: the match fits the keyframes at least
+	 * refuted_prediction_min_fit ([icp] seed_fit_sigma_m likelihood) and by
+	 * refuted_prediction_min_fit_gain more than the scan at the predicted
+	 * pose does. Odometry's heading errors at real logs' fast turns are
+	 * heavy-tailed, not Gaussian. 0 = never (the gate alone). */
+	double refuted_prediction_min_fit = 0.6;
+	double refuted_prediction_min_fit_gain = 0.3;
 
 	template <class V>
 	void visit(V& v)
@@ -83,6 +93,8 @@ struct TUkfSectionOptions
 		v.real("gate_nis", gate_nis, 0.1, 1e9);
 		v.real("unknown_motion_xy_std_m", unknown_motion_xy_std_m, 0.01, 100.0);
 		v.degrees("unknown_motion_theta_std_deg", unknown_motion_theta_std_rad, 0.1, 180.0);
+		v.real("refuted_prediction_min_fit", refuted_prediction_min_fit, 0.0, 1.0);
+		v.real("refuted_prediction_min_fit_gain", refuted_prediction_min_fit_gain, 0.0, 1.0);
 	}
 };
 
@@ -132,7 +144,13 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	 * refused-match seed's result competing with it, which the motion prior
 	 * then counts as another refusal instead of the match's confirmation. */
 	void fuse(const matching::TPoseMatch& match, bool relative, fusion::CAdaptiveMeasurementNoise& noise,
-			  TPoseEstimate& estimate, const matching::TPoseMatch* refusedTrack = nullptr);
+			  TPoseEstimate& estimate, const matching::TPoseMatch* refusedTrack = nullptr,
+			  const std::function<double()>& predictionFit = {});
+	/** Widens the prediction when an absolute match beyond the gate fits the
+	 * keyframes well and the scan at the predicted pose does not ([ukf]
+	 * refuted_prediction_min_fit...); true if it did. */
+	bool widenRefutedPrediction(const matching::TPoseMatch& match, const Eigen::Matrix3d& R,
+								const std::function<double()>& predictionFit);
 	mrpt::poses::CPose2D currentPose() const;
 
 	TPoseEstimationOptions m_options;
