@@ -75,3 +75,40 @@ TEST(OdometryTracker, GapIsUnknownMotionNotZeroMotion)
 	EXPECT_TRUE(next.known);
 	expectPose(next.delta, 1.0, 0, 0);
 }
+
+namespace
+{
+mrpt::obs::CObservationOdometry odometryAtTime(double t_s, double x)
+{
+	mrpt::obs::CObservationOdometry o = odometryAt(x, 0, 0);
+	o.timestamp = mrpt::Clock::fromDouble(t_s);
+	return o;
+}
+}  // namespace
+
+TEST(OdometryTracker, IncrementsEndAtTheScansTime)
+{
+	// Readings at 10 s (x = 0) and 11 s (x = 1): a scan at 10.25 s gets the
+	// first quarter of that interval, the next scan at 11 s the rest.
+	hslam::slam::TOdometryTiming timing;
+	COdometryTracker tracker({}, timing);
+	tracker.addOdometryObservation(odometryAtTime(10.0, 0.0));
+	EXPECT_FALSE(tracker.readingTimeAfter(10.25));  // the pipeline holds the scan
+	tracker.addOdometryObservation(odometryAtTime(11.0, 1.0));
+	EXPECT_TRUE(tracker.readingTimeAfter(10.25));
+	expectPose(tracker.pendingIncrement(10.25).delta, 0.25, 0, 0);
+	expectPose(tracker.takeIncrement(10.25).delta, 0.25, 0, 0);
+	expectPose(tracker.takeIncrement(11.0).delta, 0.75, 0, 0);
+	// Stamped 0.5 s late: the reading stamped 12 s is the pose at 11.5 s.
+	timing.offset_s = 0.5;
+	COdometryTracker late({}, timing);
+	late.addOdometryObservation(odometryAtTime(10.5, 0.0));
+	late.addOdometryObservation(odometryAtTime(12.0, 1.5));
+	expectPose(late.takeIncrement(10.5).delta, 0.5, 0, 0);  // 10.0 -> 10.5 s of 10.0 -> 11.5 s
+	timing.interpolate = false;  // the last reading before the scan, whatever its time
+	COdometryTracker plain({}, timing);
+	plain.addOdometryObservation(odometryAtTime(10.0, 0.0));
+	plain.addOdometryObservation(odometryAtTime(11.0, 1.0));
+	expectPose(plain.takeIncrement(10.25).delta, 1.0, 0, 0);
+	EXPECT_TRUE(plain.readingTimeAfter(30.0));  // nothing to wait for
+}

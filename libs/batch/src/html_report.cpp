@@ -49,7 +49,10 @@ void writeSummaryTable(std::ostream& h, const TRunSummary& s)
 	  << figureRow("person tracks", "person_tracks", std::to_string(s.person_tracks))
 	  << figureRow("TBF sonar corners", "sonar_corners", std::to_string(s.sonar_corners))
 	  << figureRow("odometry distance scale (self-calibration)", "odometry_distance_scale",
-				   number(s.odometry_distance_scale, "%.4f") + (s.odometry_scale_applied ? ", applied" : ", not applied"));
+				   number(s.odometry_distance_scale, "%.4f") + (s.odometry_scale_applied ? ", applied" : ", not applied"))
+	  << figureRow("odometry time offset in use, s (fit)", "odometry_time_offset_s",
+				   number(s.odometry_time_offset_s, "%.3f") + " (" +
+					   (s.odometry_time_offset_fit_s ? number(*s.odometry_time_offset_fit_s, "%.3f") : "none") + ")");
 	if (s.evaluation && !s.evaluation->ate.position_m.empty())
 		h << figureRow("ATE RMSE (m)", "ate_rmse_m", number(s.evaluation->ate.position_m.rmse, "%.4f"));
 	h << "</table>\n";

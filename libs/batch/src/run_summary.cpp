@@ -76,6 +76,9 @@ TRunSummary summarizeRun(const slam::CMappingPipeline& pipeline, const TBatchReq
 	countTracks(pipeline, s);
 	s.odometry_distance_scale = pipeline.odometryCalibration().state().distance_scale;
 	s.odometry_scale_applied = pipeline.odometryCalibration().state().correction.enabled;
+	s.odometry_time_offset_s = pipeline.odometryOffsetInUse_s();
+	if (const auto fit = pipeline.odometryTimeOffset().estimate(s.odometry_time_offset_s))
+		s.odometry_time_offset_fit_s = fit->offset_s;
 	s.wall_s = wall_s;
 	s.ms_per_scan = s.scans > 0 ? wall_s * 1000.0 / static_cast<double>(s.scans) : 0.0;
 	s.input_error = result.input_error;
@@ -108,6 +111,9 @@ std::string runSummaryToJson(const TRunSummary& s)
 		{"person_tracks", std::to_string(s.person_tracks)},
 		{"odometry_distance_scale", jsonNumber(s.odometry_distance_scale, "%.5f")},
 		{"odometry_scale_applied", s.odometry_scale_applied ? "true" : "false"},
+		{"odometry_time_offset_s", jsonNumber(s.odometry_time_offset_s, "%.3f")},
+		{"odometry_time_offset_fit_s",
+		 s.odometry_time_offset_fit_s ? jsonNumber(*s.odometry_time_offset_fit_s, "%.3f") : "null"},
 		{"wall_s", jsonNumber(s.wall_s, "%.3f")},
 		{"ms_per_scan", jsonNumber(s.ms_per_scan, "%.3f")},
 		{"input_error", s.input_error.empty() ? "null" : jsonString(s.input_error)},

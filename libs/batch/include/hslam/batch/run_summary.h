@@ -8,6 +8,8 @@
  * (tracks confirmed at least once),
  * odometry_distance_scale and odometry_scale_applied ([odometry_self_calibration]'s
  * fit and whether it corrected the odometry),
+ * odometry_time_offset_s (the offset in use at the end, s) and
+ * odometry_time_offset_fit_s (the [odometry_timing] fit, null before any pair),
  * wall_s (whole run, outputs included), ms_per_scan (wall_s per scan),
  * input_error (null if the whole input was read), evaluated, ate_rmse_m,
  * ate_mean_m, ate_max_m, matched_poses (null without a reference),
@@ -31,6 +33,8 @@ struct TRunSummary
 	size_t matches = 0, matches_failed = 0, matches_rejected = 0;
 	double odometry_distance_scale = 1;  //!< fitted by [odometry_self_calibration]
 	bool odometry_scale_applied = false;  //!< the fit corrected the odometry
+	double odometry_time_offset_s = 0;  //!< [odometry_timing] offset in use at the end
+	std::optional<double> odometry_time_offset_fit_s;  //!< its fit (none before a pair was scored)
 	double wall_s = 0;
 	double ms_per_scan = 0;  //!< wall_s * 1000 / scans (0 without scans)
 	std::string input_error;  //!< empty when the whole input was read

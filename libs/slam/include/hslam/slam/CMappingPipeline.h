@@ -45,7 +45,9 @@
 #include <mrpt/obs/CObservationRange.h>
 #include <mrpt/config/CConfigFileBase.h>
 
+#include <deque>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -76,6 +78,7 @@ struct TPipelineCounters
 	size_t sonar_observations_ignored = 0;  //!< another label, or taken across an odometry gap
 	size_t sonar_readings_inserted = 0;  //!< single sonar readings inserted into the grid
 	size_t other_observations = 0;  //!< observations no stage uses yet
+	size_t odometry_offset_changes = 0;  //!< times the estimated odometry time offset was applied
 };
 
 class CMappingPipeline
@@ -115,6 +118,9 @@ class CMappingPipeline
 	/** finish() rebuilt the grid from the optimised graph. */
 	bool mapRerendered() const { return m_mapRerendered; }
 	const calib::COdometrySelfCalibration& odometryCalibration() const { return m_odometryCalibration.calibration(); }
+	/** [odometry_timing]: the offset's fit so far, and the offset in use (s). */
+	const calib::COdometryTimeOffset& odometryTimeOffset() const { return m_timeOffset; }
+	double odometryOffsetInUse_s() const { return m_odometry.timing().offset_s; }
 	/** Dead-reckoning pose at each scan (same timestamps), for comparison. */
 	const common::TTrajectory2D& odometryTrajectory() const { return m_odometryTrajectory; }
 	common::CStageTimer& timer() { return m_timer; }
@@ -160,8 +166,16 @@ class CMappingPipeline
 	static std::vector<std::string> sections();
 
    private:
+	/** Hands `obs` on in arrival order; a sensor reading with no odometry
+	 * reading after it yet waits for one ([odometry_timing] interpolate). */
 	void processObservation(const mrpt::obs::CObservation::Ptr& obs);
+	/** Dispatches waiting readings that have their odometry now, or that
+	 * waited max_wait_s of later data, or all of them. */
+	void releaseWaiting(bool all);
+	void dispatchObservation(const mrpt::obs::CObservation::Ptr& obs);
 	void processScan(const mrpt::obs::CObservation2DRangeScan& scan);
+	/** Feeds the scan's estimate to the odometry time offset's fit and applies the fit when confident. */
+	void observeTiming(double t_s, const TPoseEstimate& estimate);
 	void processSonar(const mrpt::obs::CObservationRange& obs);
 	/** Beams on people predicted from the filter's earlier tracks (empty: none). */
 	std::vector<bool> peopleBeforeMatching(const common::TRangeData& scan, const TOdometryIncrement& increment) const;
@@ -193,6 +207,9 @@ class CMappingPipeline
 	std::unique_ptr<CPoseEstimator> m_estimator;
 	std::unique_ptr<CPoseEstimator> m_localMapDefaults;  //!< unused estimator whose options config_used.ini records
 	COdometryTracker m_odometry;
+	calib::COdometryTimeOffset m_timeOffset;  //!< [odometry_timing] estimate_offset
+	std::deque<mrpt::obs::CObservation::Ptr> m_waiting;  //!< sensor readings waiting for the odometry after them
+	double m_latestArrival_s = -std::numeric_limits<double>::infinity();  //!< newest stamp seen
 	COdometryCalibrationStage m_odometryCalibration;  //!< [odometry_self_calibration]
 	mrpt::poses::CPose2D m_deadReckoningPose;
 	common::TTrajectory2D m_trajectory, m_odometryTrajectory;
