@@ -320,6 +320,7 @@ void printSummary(const TRecordingSummary& s, const CRecordingWriter& writer, TL
 	for (const auto& line : s.outage_lines) std::cout << line;
 	if (live.pipeline)
 	{
+		live.pipeline->finish();  // readings still waiting for odometry, the map from the optimised graph
 		const auto files = hslam::slam::writeMappingOutputs(*live.pipeline, live.output, mapOut);
 		std::cout << "  live map: " << live.pipeline->counters().laser_scans << " scans mapped, " << files.size()
 				  << " files in " << mapOut << "\n";

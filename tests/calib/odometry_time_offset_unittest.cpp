@@ -69,3 +69,20 @@ TEST(OdometryTimeOffset, NothingIsAppliedBeforeEnoughRotationWasSeen)
 	off.estimate_offset = false;
 	EXPECT_FALSE(fed(0.3, 60.0, 0.002, off).offsetToApply(0.0).has_value());
 }
+
+TEST(OdometryTimeOffset, OneReadingPerMatchIsNotEnoughToTell)
+{
+	// Odometry read only when a scan is matched (as the CARMEN imports give
+	// it): a shifted reading blends neighbouring steps, not a clock. The same
+	// late robot as above, readings at 5 Hz with the matches.
+	COdometryTimeOffset fit{TOdometryTimeOffsetOptions{}};
+	for (int k = 0; k * 0.2 <= 60.0; ++k)
+	{
+		const double t = k * 0.2;
+		fit.addReading(t, mrpt::poses::CPose2D(0, 0, headingAt(t - 0.3)));
+		fit.addMatchedHeading(t, headingAt(t));
+	}
+	ASSERT_TRUE(fit.estimate(0.0).has_value());
+	EXPECT_NEAR(fit.estimate(0.0)->readings_per_pair, 1.0, 0.01);
+	EXPECT_FALSE(fit.offsetToApply(0.0).has_value());
+}

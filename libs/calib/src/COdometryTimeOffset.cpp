@@ -20,6 +20,8 @@ void COdometryTimeOffset::addReading(double stamp_s, const mrpt::poses::CPose2D&
 							   ? pose.phi()
 							   : m_readings.back().second + mrpt::math::wrapToPi(pose.phi() - m_readings.back().second);
 	m_readings.emplace_back(stamp_s, heading);
+	if (m_readingCount++ == 0) m_firstReading_s = stamp_s;
+	m_lastReading_s = stamp_s;
 	scoreReadyPairs();
 }
 
@@ -66,6 +68,7 @@ void COdometryTimeOffset::scoreReadyPairs()
 		if (!complete) continue;  // odometry does not cover every candidate (start, gap)
 		for (size_t i = 0; i < m_cost.size(); ++i) m_cost[i] += residual2[i];
 		m_rotation_rad += std::abs(p.matchedTurn_rad);
+		m_pairSpan_s += p.t2_s - p.t1_s;
 		++m_pairs;
 	}
 	// readings older than every pair still to score are not needed
@@ -101,6 +104,9 @@ std::optional<COdometryTimeOffset::TEstimate> COdometryTimeOffset::estimate(doub
 	e.cost_ratio = inUse > 0 ? costAt(offset) / inUse : 1.0;
 	e.rotation_rad = m_rotation_rad;
 	e.pairs = m_pairs;
+	const double readingInterval_s =
+		m_readingCount > 1 ? (m_lastReading_s - m_firstReading_s) / static_cast<double>(m_readingCount - 1) : 0.0;
+	e.readings_per_pair = readingInterval_s > 0 ? m_pairSpan_s / static_cast<double>(m_pairs) / readingInterval_s : 0.0;
 	return e;
 }
 
@@ -108,7 +114,8 @@ std::optional<double> COdometryTimeOffset::offsetToApply(double inUse_s) const
 {
 	if (!m_options.estimate_offset || m_rotation_rad < m_options.min_rotation_rad) return std::nullopt;
 	const auto e = estimate(inUse_s);
-	if (!e || e->cost_ratio > m_options.max_cost_ratio || std::abs(e->offset_s - inUse_s) < m_options.min_change_s)
+	if (!e || e->readings_per_pair < m_options.min_readings_per_pair || e->cost_ratio > m_options.max_cost_ratio ||
+		std::abs(e->offset_s - inUse_s) < m_options.min_change_s)
 		return std::nullopt;
 	return e->offset_s;
 }

@@ -274,9 +274,8 @@ void CScanMatchingPoseEstimator::fuse(const matching::TPoseMatch& match, bool re
 		if (refusedTrack)
 			m_motion.observeMatch(refusedTrack->pose, refusedTrack->covariance, false,
 								  std::numeric_limits<double>::infinity(), m_matchTime_s);
-		else if (basinNis)
-			m_motion.observeMatch(match.pose, *match.basin_covariance, *basinNis <= m_ukfOptions.gate_nis, *basinNis,
-								  m_matchTime_s);
+		else if (const double nis = basinNis.value_or(0.0); basinNis.has_value())
+			m_motion.observeMatch(match.pose, *match.basin_covariance, nis <= m_ukfOptions.gate_nis, nis, m_matchTime_s);
 		else
 			m_motion.observeMatch(match.pose, match.covariance, result.accepted, result.nis, m_matchTime_s);
 	}

@@ -92,7 +92,11 @@ class COdometryTracker
 	void addAction(const mrpt::obs::CActionRobotMovement2D& action);
 	void addOdometryObservation(const mrpt::obs::CObservationOdometry& odometry);
 	/** Declares that the motion since the last scan is unknown. */
-	void markGap() { m_gap = true; }
+	void markGap()
+	{
+		m_gap = true;
+		m_lastStepTime_s = -std::numeric_limits<double>::infinity();  // no reading after it is spread back over it
+	}
 
 	/** Pose change since the previous call (i.e. the previous scan); with
 	 * `interpolate` and a time, up to that time (s, the scan's stamp). */
