@@ -257,12 +257,10 @@ void CScanMatchingPoseEstimator::fuse(const matching::TPoseMatch& match, bool re
 	// explanation contradicts odometry is what counts refusals (the
 	// laser-only sample from entry 50: 0.08 m, 3.79 m if the widened match
 	// counted neither way). It says nothing about the matcher's calibration.
-	const std::optional<double> basinNis =
-		match.basin_covariance && !relative
-			? std::optional<double>(
-				  m_ukf.absoluteNis(toVec(match.pose), noise.effectiveCovariance(*match.basin_covariance, weak)))
-			: std::nullopt;
-	if (!relative && !weak && !basinNis && !refusedTrack) widenRefutedPrediction(match, R, predictionFit);
+	const bool inBasin = match.basin_covariance.has_value() && !relative;
+	const double basinNis =
+		inBasin ? m_ukf.absoluteNis(toVec(match.pose), noise.effectiveCovariance(*match.basin_covariance, weak)) : 0.0;
+	if (!relative && !weak && !inBasin && !refusedTrack) widenRefutedPrediction(match, R, predictionFit);
 	const auto result = relative ? m_ukf.updateRelative(toVec(match.pose), R, m_ukfOptions.gate_nis)
 								 : m_ukf.updateAbsolute(toVec(match.pose), R, m_ukfOptions.gate_nis);
 	if (!relative && !weak)
@@ -274,12 +272,13 @@ void CScanMatchingPoseEstimator::fuse(const matching::TPoseMatch& match, bool re
 		if (refusedTrack)
 			m_motion.observeMatch(refusedTrack->pose, refusedTrack->covariance, false,
 								  std::numeric_limits<double>::infinity(), m_matchTime_s);
-		else if (const double nis = basinNis.value_or(0.0); basinNis.has_value())
-			m_motion.observeMatch(match.pose, *match.basin_covariance, nis <= m_ukfOptions.gate_nis, nis, m_matchTime_s);
+		else if (inBasin)
+			m_motion.observeMatch(match.pose, *match.basin_covariance, basinNis <= m_ukfOptions.gate_nis, basinNis,
+								  m_matchTime_s);
 		else
 			m_motion.observeMatch(match.pose, match.covariance, result.accepted, result.nis, m_matchTime_s);
 	}
-	if (result.accepted && !basinNis) noise.observeNis(result.nis);
+	if (result.accepted && !inBasin) noise.observeNis(result.nis);
 	estimate.match_method = match.method;
 	estimate.match_quality = match.quality;
 	estimate.match_accepted = result.accepted;
