@@ -45,17 +45,12 @@ CBatchProcessor::CBatchProcessor(TBatchRequest request, std::ostream& out, std::
 TBatchResult CBatchProcessor::run()
 {
 	const auto started = std::chrono::steady_clock::now();
-	const auto config = slam::TMappingConfig::fromConfig(m_request.config_file, m_request.overrides);
-	slam::CMappingPipeline pipeline(config.ini);
+	auto config = slam::TMappingConfig::fromConfig(m_request.config_file, m_request.overrides);
 	const slam::TOutputOptions& outputOptions = config.output;
-	if (outputOptions.write_sensor_maps) pipeline.keepSensorMaps();
-	if (outputOptions.dynamic_debug_images)
-		pipeline.keepDynamicDebugFrames(static_cast<size_t>(outputOptions.dynamic_debug_max_images));
 	common::COutputFolder folder(m_request.output_dir, m_request.overwrite);  // lock, refuse foreign, clean stale
-	addDebugFrameWriter(pipeline, outputOptions.debug_frames_every);
-
 	TBatchResult result;
-	readRawlog(pipeline, result);
+	const auto pipelinePtr = processRawlog(config, result);
+	slam::CMappingPipeline& pipeline = *pipelinePtr;
 	pipeline.finish();  // map from the optimised graph, if any
 	result.counters = pipeline.counters();
 	result.files_written = slam::writeMappingOutputs(pipeline, outputOptions, m_request.output_dir);
@@ -67,6 +62,39 @@ TBatchResult CBatchProcessor::run()
 	m_out << "\nReport: " << m_request.output_dir << "/report.html (figures: summary.json)\n";
 	folder.finish();
 	return result;
+}
+
+std::unique_ptr<slam::CMappingPipeline> CBatchProcessor::makePipeline(const slam::TMappingConfig& config)
+{
+	auto pipeline = std::make_unique<slam::CMappingPipeline>(config.ini);
+	if (config.output.write_sensor_maps) pipeline->keepSensorMaps();
+	if (config.output.dynamic_debug_images)
+		pipeline->keepDynamicDebugFrames(static_cast<size_t>(config.output.dynamic_debug_max_images));
+	addDebugFrameWriter(*pipeline, config.output.debug_frames_every);
+	return pipeline;
+}
+
+std::unique_ptr<slam::CMappingPipeline> CBatchProcessor::processRawlog(slam::TMappingConfig& config,
+																	   TBatchResult& result)
+{
+	auto pipeline = makePipeline(config);
+	readRawlog(*pipeline, result);
+	const auto timing = common::loadedOptions<slam::TOdometryTiming>(config.ini, "odometry_timing");
+	if (!timing.second_pass || pipeline->counters().odometry_offset_changes == 0) return pipeline;
+	// floor sample with odometry 0.3 s late: fitted after the first corner,
+	// whose heading error stayed (docs/pose-estimation.md)
+	const double offset_s = pipeline->odometryOffsetInUse_s();
+	m_out << "Odometry time offset fitted during the run: " << offset_s
+		  << " s ([odometry_timing]); second pass from the start with it\n";
+	auto overrides = m_request.overrides;
+	overrides.push_back("odometry_timing.offset_s=" + std::to_string(offset_s));
+	overrides.push_back("odometry_timing.estimate_offset=false");
+	config = slam::TMappingConfig::fromConfig(m_request.config_file, overrides);
+	result = TBatchResult();
+	pipeline.reset();  // the first pass's memory, before the second's
+	pipeline = makePipeline(config);
+	readRawlog(*pipeline, result);
+	return pipeline;
 }
 
 void CBatchProcessor::readRawlog(slam::CMappingPipeline& pipeline, TBatchResult& result)

@@ -7,6 +7,7 @@
 
 #include <hslam/eval/evaluate_trajectory.h>
 #include <hslam/slam/CMappingPipeline.h>
+#include <hslam/slam/mapping_config.h>
 #include <hslam/slam/batch_outputs.h>
 
 #include <optional>
@@ -49,6 +50,14 @@ class CBatchProcessor
 	TBatchResult run();
 
    private:
+	/** A pipeline for `overrides` (on top of the request's), with the debug
+	 * outputs the request asks for attached. */
+	std::unique_ptr<slam::CMappingPipeline> makePipeline(const slam::TMappingConfig& config);
+	/** The whole rawlog through a fresh pipeline; with [odometry_timing]
+	 * second_pass, once more from the start with the odometry time offset
+	 * the first pass fitted, if it fitted one (the turns before the fit
+	 * was clear are read right too). */
+	std::unique_ptr<slam::CMappingPipeline> processRawlog(slam::TMappingConfig& config, TBatchResult& result);
 	void readRawlog(slam::CMappingPipeline& pipeline, TBatchResult& result);
 	void evaluate(const slam::CMappingPipeline& pipeline, TBatchResult& result);
 	void writeEffectiveConfig(const slam::CMappingPipeline& pipeline, const slam::TOutputOptions& outputOptions);

@@ -56,6 +56,9 @@ struct TOdometryTiming
 	 * after it (s of later data); then it is processed with what came. */
 	double max_wait_s = 0.5;
 	calib::TOdometryTimeOffsetOptions estimation;  //!< the offset estimated from the matches
+	/** hslam-process: when the run fitted an offset, process the rawlog once
+	 * more from the start with it (the outputs are the second pass's). */
+	bool second_pass = true;
 
 	template <class V>
 	void visit(V& v)
@@ -64,6 +67,7 @@ struct TOdometryTiming
 		v.flag("interpolate", interpolate);
 		v.real("max_wait_s", max_wait_s, 0.0, 10.0);
 		estimation.visit(v);
+		v.flag("second_pass", second_pass);
 	}
 };
 
