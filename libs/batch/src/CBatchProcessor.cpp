@@ -35,6 +35,18 @@ void printOdometryCalibration(const calib::COdometrySelfCalibration& calibration
 		<< st.correction.wheelbase_ratio
 		<< (st.correction.enabled ? " (applied)" : " (not applied: within the front-end's own bias)") << "\n";
 }
+/** The odometry time offset in use and its fit ([odometry_timing]). */
+void printOdometryTiming(const slam::CMappingPipeline& pipeline, std::ostream& out)
+{
+	const auto fit = pipeline.odometryTimeOffset().estimate(pipeline.odometryOffsetInUse_s());
+	if (pipeline.odometryOffsetInUse_s() == 0 && !fit) return;
+	out << "Odometry time offset ([odometry_timing]): " << pipeline.odometryOffsetInUse_s() << " s in use";
+	if (fit)
+		out << "; fit " << fit->offset_s << " s over " << fit->pairs << " match pairs ("
+			<< fit->rotation_rad * 180.0 / M_PI << " deg of rotation, cost " << fit->cost_ratio
+			<< " of the offset in use, " << fit->readings_per_pair << " odometry readings per pair)";
+	out << "\n";
+}
 }  // namespace
 
 CBatchProcessor::CBatchProcessor(TBatchRequest request, std::ostream& out, std::ostream& err)
@@ -172,6 +184,7 @@ void CBatchProcessor::printSummary(const slam::CMappingPipeline& pipeline, const
 		  << " KiB)\n";
 	printMatchSummary(pipeline);
 	printOdometryCalibration(pipeline.odometryCalibration(), m_out);
+	printOdometryTiming(pipeline, m_out);
 	if (pipeline.loopClosureStage())
 	{
 		printLoopClosureTiming(*pipeline.loopClosureStage(), m_out);
