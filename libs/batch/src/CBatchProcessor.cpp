@@ -91,8 +91,7 @@ std::unique_ptr<slam::CMappingPipeline> CBatchProcessor::processRawlog(slam::TMa
 {
 	auto pipeline = makePipeline(config);
 	readRawlog(*pipeline, result);
-	const auto timing = common::loadedOptions<slam::TOdometryTiming>(config.ini, "odometry_timing");
-	if (!timing.second_pass || pipeline->counters().odometry_offset_changes == 0) return pipeline;
+	if (!pipeline->odometryTiming().second_pass || pipeline->counters().odometry_offset_changes == 0) return pipeline;
 	// floor sample with odometry 0.3 s late: fitted after the first corner,
 	// whose heading error stayed (docs/pose-estimation.md)
 	const double offset_s = pipeline->odometryOffsetInUse_s();

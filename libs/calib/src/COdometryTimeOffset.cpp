@@ -47,13 +47,14 @@ std::optional<double> COdometryTimeOffset::odometryHeadingAt(double stamp_s) con
 void COdometryTimeOffset::scoreReadyPairs()
 {
 	const int half = static_cast<int>(m_cost.size() / 2);
+	const double cap2 = m_options.residual_cap_rad * m_options.residual_cap_rad;
+	m_residual2.resize(m_cost.size());
 	while (!m_waiting.empty() && !m_readings.empty() &&
 		   m_readings.back().first >= m_waiting.front().t2_s + m_options.max_offset_s)
 	{
 		const TPair p = m_waiting.front();
 		m_waiting.pop_front();
 		bool complete = true;
-		std::vector<double> residual2(m_cost.size());
 		for (int k = -half; k <= half && complete; ++k)
 		{
 			const double tau = k * m_options.offset_step_s;
@@ -62,11 +63,11 @@ void COdometryTimeOffset::scoreReadyPairs()
 			else
 			{
 				const double r = mrpt::math::wrapToPi(p.matchedTurn_rad - (*h2 - *h1));
-				residual2[static_cast<size_t>(k + half)] = std::min(r * r, std::pow(m_options.residual_cap_rad, 2));
+				m_residual2[static_cast<size_t>(k + half)] = std::min(r * r, cap2);
 			}
 		}
 		if (!complete) continue;  // odometry does not cover every candidate (start, gap)
-		for (size_t i = 0; i < m_cost.size(); ++i) m_cost[i] += residual2[i];
+		for (size_t i = 0; i < m_cost.size(); ++i) m_cost[i] += m_residual2[i];
 		m_rotation_rad += std::abs(p.matchedTurn_rad);
 		m_pairSpan_s += p.t2_s - p.t1_s;
 		++m_pairs;

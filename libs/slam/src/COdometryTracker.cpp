@@ -59,6 +59,12 @@ mrpt::poses::CPose2D COdometryTracker::composedUpTo(std::optional<double> t_s, s
 	return sum;
 }
 
+mrpt::poses::CPose2D COdometryTracker::withPartial(const mrpt::poses::CPose2D& whole, const mrpt::poses::CPose2D& partial)
+{
+	// composed only when a reading was cut: otherwise plain composition, bit for bit
+	return partial.x() != 0 || partial.y() != 0 || partial.phi() != 0 ? whole + partial : whole;
+}
+
 TOdometryIncrement COdometryTracker::pendingIncrement(std::optional<double> t_s) const
 {
 	TOdometryIncrement out;
@@ -68,17 +74,18 @@ TOdometryIncrement COdometryTracker::pendingIncrement(std::optional<double> t_s)
 	if (!out.known) return out;
 	size_t whole = 0;
 	mrpt::poses::CPose2D partial;
-	out.delta = composedUpTo(t_s, whole, partial);
-	if (partial.x() != 0 || partial.y() != 0 || partial.phi() != 0) out.delta = out.delta + partial;
+	out.delta = withPartial(composedUpTo(t_s, whole, partial), partial);
 	return out;
 }
 
 TOdometryIncrement COdometryTracker::takeIncrement(std::optional<double> t_s)
 {
-	const TOdometryIncrement out = pendingIncrement(t_s);
+	TOdometryIncrement out;
+	out.known = !m_gap && m_anyOdometry;  // as pendingIncrement()
 	size_t whole = 0;
 	mrpt::poses::CPose2D partial;
-	composedUpTo(t_s, whole, partial);
+	const mrpt::poses::CPose2D composed = composedUpTo(t_s, whole, partial);
+	if (out.known) out.delta = withPartial(composed, partial);
 	for (size_t i = 0; i < whole; ++i)
 	{
 		if (std::isfinite(m_pending.front().t_s)) m_lastStepTime_s = m_pending.front().t_s;

@@ -100,6 +100,7 @@ class COdometryTimeOffset
 	std::optional<std::pair<double, double>> m_lastMatch;  //!< (time, heading)
 	std::deque<TPair> m_waiting;  //!< pairs waiting for odometry past t2 + max_offset_s
 	std::vector<double> m_cost;  //!< per candidate
+	std::vector<double> m_residual2;  //!< scratch of scoreReadyPairs(): one pair's residuals per candidate
 	double m_rotation_rad = 0;
 	size_t m_pairs = 0;
 	double m_pairSpan_s = 0;  //!< summed intervals of the scored pairs

@@ -121,6 +121,7 @@ class CMappingPipeline
 	/** [odometry_timing]: the offset's fit so far, and the offset in use (s). */
 	const calib::COdometryTimeOffset& odometryTimeOffset() const { return m_timeOffset; }
 	double odometryOffsetInUse_s() const { return m_odometry.timing().offset_s; }
+	const TOdometryTiming& odometryTiming() const { return m_odometry.timing(); }
 	/** Dead-reckoning pose at each scan (same timestamps), for comparison. */
 	const common::TTrajectory2D& odometryTrajectory() const { return m_odometryTrajectory; }
 	common::CStageTimer& timer() { return m_timer; }

@@ -123,6 +123,8 @@ class COdometryTracker
 	 * how many whole steps that took; `partial` receives the fraction of the
 	 * step after them that lies before t_s (identity if none). */
 	mrpt::poses::CPose2D composedUpTo(std::optional<double> t_s, size_t& whole, mrpt::poses::CPose2D& partial) const;
+	/** `whole` followed by the cut reading's `partial` (if any). */
+	static mrpt::poses::CPose2D withPartial(const mrpt::poses::CPose2D& whole, const mrpt::poses::CPose2D& partial);
 
 	calib::COdometryCorrection m_correction;  //!< identity unless [odometry_correction] enables it
 	TOdometryTiming m_timing;
