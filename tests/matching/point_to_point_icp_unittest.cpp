@@ -115,6 +115,52 @@ TEST(PointIndex2D, NearestAreExactAcrossBulkRecentAndRetiredPoints)
 	EXPECT_GT(fromRecent, 100u);  // both parts were really searched
 }
 
+TEST(PointIndex2D, NearestAreExactFarFromTheCloudAndAcrossStrayFarPoints)
+{
+	// walls of a room (what ICP queries), a few returns 500 m away (the grid
+	// then has coarser cells), and queries inside, beside and far outside
+	auto& rng = mrpt::random::getRandomGenerator();
+	rng.randomize(11);
+	std::vector<float> xs, ys;
+	for (int i = 0; i < 400; ++i)
+	{
+		const float t = static_cast<float>(rng.drawUniform(-5, 5));
+		xs.push_back(t), ys.push_back(i % 2 ? 5.f : -5.f);
+		xs.push_back(i % 2 ? 5.f : -5.f), ys.push_back(t);
+	}
+	const std::vector<float> nearX = xs, nearY = ys;
+	for (float far : {500.f, -480.f}) xs.push_back(far), ys.push_back(far * 0.5f);
+	for (const auto& [cloudX, cloudY] : {std::pair{nearX, nearY}, std::pair{xs, ys}})
+	{
+		CPointIndex2D index;
+		index.build(cloudX, cloudY);
+		std::vector<size_t> live(cloudX.size());
+		std::iota(live.begin(), live.end(), 0);
+		for (int q = 0; q < 300; ++q)
+		{
+			const double span = q < 100 ? 6 : q < 200 ? 40 : 2000;
+			const float x = static_cast<float>(rng.drawUniform(-span, span)), y = static_cast<float>(rng.drawUniform(-span, span));
+			uint32_t idx[4];
+			float d2[4];
+			ASSERT_EQ(index.nearest(x, y, 4, idx, d2), 4u);
+			const auto expected = bruteForce(cloudX, cloudY, live, x, y, 4);
+			for (size_t j = 0; j < 4; ++j) EXPECT_NEAR(d2[j], expected[j], 1e-3f * std::max(1.f, expected[j])) << x << " " << y;
+		}
+	}
+	CPointIndex2D two;  // fewer live points than asked for: all of them, nearest first
+	two.build({0.f, 3.f, 1.f}, {0.f, 0.f, 0.f});
+	two.retireBelow(1);
+	uint32_t idx[4];
+	float d2[4];
+	ASSERT_EQ(two.nearest(-1.f, 0.f, 4, idx, d2), 2u);
+	EXPECT_EQ(idx[0], 2u);
+	EXPECT_FLOAT_EQ(d2[0], 4.f);
+	EXPECT_EQ(idx[1], 1u);
+	EXPECT_FLOAT_EQ(d2[1], 16.f);
+	CPointIndex2D none;
+	EXPECT_EQ(none.nearest(0.f, 0.f, 4, idx, d2), 0u);
+}
+
 TEST(PointToPointIcp, AgreesWithMrptClassicIcp)
 {
 	const auto world = room(0.04);

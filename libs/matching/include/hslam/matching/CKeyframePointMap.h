@@ -36,8 +36,9 @@ class CKeyframePointMap
 		 * size (centroid of the cell's points); 0 = every keyframe point. */
 		double voxel_size_m = 0;
 		/** referenceIndex(): keyframes added since the last full rebuild of
-		 * the bulk k-d tree before it is rebuilt (they sit in a small tree
-		 * of their own until then; queries are exact either way). */
+		 * the index before it is rebuilt from the window (until then the
+		 * points of keyframes that left are skipped by the queries; exact
+		 * either way). */
 		int index_rebuild_keyframes = 8;
 
 		template <class V>
@@ -94,7 +95,7 @@ class CKeyframePointMap
 	mrpt::maps::CSimplePointsMap m_reference;
 	CPointIndex2D m_index;
 	size_t m_indexFirstId = 0, m_indexEndId = 0;  //!< keyframe ids in m_index: [first, end)
-	size_t m_indexBulkKeyframes = 0;  //!< of which the first ones are in the bulk tree
+	size_t m_indexBulkKeyframes = 0;  //!< of which the first ones are in the bulk part
 	std::deque<size_t> m_indexPointCounts;  //!< points of each keyframe in m_index, oldest first
 	bool m_referenceStale = true, m_indexStale = true;
 };

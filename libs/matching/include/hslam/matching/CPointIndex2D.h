@@ -1,23 +1,26 @@
-/* hslam: a 2D point cloud with nanoflann k-d trees (Debian libnanoflann-dev)
- * over flat float arrays: the reference of CPointToPointIcp and of the
+/* hslam: a 2D point cloud with exact k-nearest-neighbour queries through a
+ * uniform bucket grid: the reference of CPointToPointIcp and of the
  * geometric ICP covariance.
  *
+ * Why a grid and not a k-d tree: ICP's queries are scan points lying on the
+ * walls the reference samples, so their nearest neighbours sit in the
+ * query's own cell or the ring around it. A bucket grid answers those by
+ * reading a few contiguous cells, and it is built in O(n) by a counting sort
+ * (no tree to balance). Replacing nanoflann's k-d tree (Debian
+ * libnanoflann-dev) here cut the front-end's tree-query and tree-build time
+ * (docs/pose-estimation.md, "Bucket-grid nearest neighbours"); answers are the
+ * same exact k nearest points.
+ *
  * A scan-to-map reference changes a little at every keyframe (one keyframe
- * in, the oldest out), and rebuilding one tree over all its points each time
- * was most of the matcher's cost. The points are therefore kept in two parts:
- * a bulk part whose tree is built rarely, and a small recent part (the
- * keyframes added since) whose tree is rebuilt when it grows. Points at the
- * front of the bulk part can be retired (a keyframe leaving the window)
- * without rebuilding: queries skip them. A query returns the exact k nearest
- * live points of both parts. Indices address the bulk part first, then the
- * recent part. */
+ * in, the oldest out). Points are kept in two parts for the caller's
+ * bookkeeping: a bulk part (build()) and a recent part (append()); indices
+ * address the bulk part first, then the recent part. Points at the front of
+ * the bulk part can be retired (a keyframe leaving the window) without
+ * rebuilding: queries skip them. Every build() or append() re-sorts the live
+ * points into the grid (linear time). */
 #pragma once
 
-#include <mrpt/math/TPoint2D.h>
-#include <nanoflann.hpp>
-
 #include <cstdint>
-#include <memory>
 #include <vector>
 
 namespace hslam::matching
@@ -25,51 +28,42 @@ namespace hslam::matching
 class CPointIndex2D
 {
    public:
-	CPointIndex2D();
-	~CPointIndex2D();
-	CPointIndex2D(CPointIndex2D&&) noexcept;
-	CPointIndex2D& operator=(CPointIndex2D&&) noexcept;
-
 	/** Replaces all points (into the bulk part) and rebuilds. */
 	void build(std::vector<float> xs, std::vector<float> ys);
-	/** Adds points to the recent part (its tree is rebuilt). */
+	/** Adds points to the recent part and rebuilds the grid. */
 	void append(const std::vector<float>& xs, const std::vector<float>& ys);
 	/** Bulk points with an index below `firstLive` are skipped from now on. */
 	void retireBelow(size_t firstLive) { m_firstLive = firstLive; }
 
 	bool empty() const { return liveSize() == 0; }
 	/** Addressable points (bulk, retired ones included, then recent). */
-	size_t size() const { return m_bulk->x.size() + m_recent->x.size(); }
+	size_t size() const { return m_x.size(); }
 	size_t liveSize() const { return size() - m_firstLive; }
-	size_t bulkSize() const { return m_bulk->x.size(); }
-	size_t recentSize() const { return m_recent->x.size(); }
-	float x(size_t i) const { return i < bulkSize() ? m_bulk->x[i] : m_recent->x[i - bulkSize()]; }
-	float y(size_t i) const { return i < bulkSize() ? m_bulk->y[i] : m_recent->y[i - bulkSize()]; }
+	size_t bulkSize() const { return m_bulkSize; }
+	size_t recentSize() const { return size() - m_bulkSize; }
+	float x(size_t i) const { return m_x[i]; }
+	float y(size_t i) const { return m_y[i]; }
 
 	/** Up to k (<= 32) nearest live points of (x, y): indices and squared
-	 * distances, nearest first. Returns how many were found. */
+	 * distances, nearest first (equal distances: lower index first). Returns
+	 * how many were found (k unless fewer points are live). */
 	size_t nearest(float x, float y, size_t k, uint32_t* indices, float* distances2) const;
 
-	/** The points, as nanoflann's dataset adaptor (kept on the heap: the
-	 * trees refer to them, so the index can be moved). */
-	struct TCloud
-	{
-		std::vector<float> x, y;
-		size_t kdtree_get_point_count() const { return x.size(); }
-		float kdtree_get_pt(size_t i, size_t dim) const { return dim == 0 ? x[i] : y[i]; }
-		template <class BBox>
-		bool kdtree_get_bbox(BBox&) const
-		{
-			return false;
-		}
-	};
-
    private:
-	using TTree =
-		nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, TCloud>, TCloud, 2, uint32_t>;
-	std::unique_ptr<TCloud> m_bulk, m_recent;
-	std::unique_ptr<TTree> m_bulkTree, m_recentTree;
-	size_t m_firstLive = 0;
+	void rebuildGrid();
+	/** Offers the live points of cell (ix, iy) to the result. */
+	template <class Result>
+	void scanCell(int ix, int iy, float x, float y, Result& result) const;
+
+	std::vector<float> m_x, m_y;  //!< all points, by index
+	size_t m_bulkSize = 0, m_firstLive = 0;
+	// the grid: cell (ix, iy) holds entries [m_cellStart[c], m_cellStart[c + 1])
+	// of the cell-ordered copies below, c = iy * m_width + ix
+	float m_x0 = 0, m_y0 = 0, m_cell_m = 0.25f, m_invCell = 4.f;
+	int m_width = 0, m_height = 0;
+	std::vector<uint32_t> m_cellStart;
+	std::vector<float> m_sortedX, m_sortedY;
+	std::vector<uint32_t> m_sortedIndex;
 };
 
 }  // namespace hslam::matching

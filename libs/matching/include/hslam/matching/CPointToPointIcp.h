@@ -58,7 +58,7 @@ class CPointToPointIcp
 		mrpt::poses::CPose2D pose;  //!< pose of the scan in the reference frame
 		double goodness = 0;  //!< fraction of scan points paired at the last iteration
 		int iterations = 0;
-		size_t tree_queries = 0;  //!< nearest-neighbour queries that needed the tree
+		size_t tree_queries = 0;  //!< nearest-neighbour queries that needed the index
 		size_t cached_answers = 0;  //!< queries answered exactly from the cache
 	};
 
