@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace hslam::graph::detail
 {
@@ -83,23 +84,37 @@ class CSearch
 	}
 
 	/** Mean level value of the query of `c.rotation` shifted by (dx, dy), 0..1
-	 * (a group node: the bound of all its rotations and offsets). */
-	float score(const TCandidate& c, bool group = false)
+	 * (a group node: the bound of all its rotations and offsets). Summing
+	 * stops once the node cannot score above `bound` even if every point left
+	 * scored 255: such a node is pruned whatever its exact score, so the
+	 * search visits the same nodes (the value returned is then <= bound). */
+	float score(const TCandidate& c, float bound, bool group = false)
 	{
 		++nodesScored;
 		const auto& q = split(c.rotation);
 		if (q.count == 0) return 0.f;
 		const int shift = group ? m_group.g + 1 : 0, dx = c.dx - shift, dy = c.dy - shift;
 		const uint8_t* cells = m_grid.levelData(c.level) + (dy * m_grid.width() + dx);
-		unsigned sum = 0;
-		for (int f : q.flat) sum += cells[f];
+		const float scale = 255.f * static_cast<float>(q.count);
+		// the sum a node must exceed, as an integer: sum > need <=> score > bound
+		const long need = static_cast<long>(std::floor(static_cast<double>(bound) * scale));
+		long sum = 0, left = 255L * static_cast<long>(q.count);
+		constexpr size_t kChunk = 32;
+		for (size_t i = 0; i < q.flat.size(); i += kChunk)
+		{
+			const size_t end = std::min(q.flat.size(), i + kChunk);
+			unsigned part = 0;
+			for (size_t j = i; j < end; ++j) part += cells[q.flat[j]];
+			sum += part, left -= 255L * static_cast<long>(end - i);
+			if (sum + left <= need) return static_cast<float>(sum + left) / scale;
+		}
 		for (size_t i = 0; i < q.cx.size(); ++i) sum += m_grid.value(c.level, q.cx[i] + dx, q.cy[i] + dy);
-		return static_cast<float>(sum) / (255.f * static_cast<float>(q.count));
+		return static_cast<float>(sum) / scale;
 	}
 
 	/** Top nodes, sorted by bound: rotation groups (rotation = the middle
 	 * one) or, without grouping, single rotations. */
-	std::vector<TCandidate> topLevel()
+	std::vector<TCandidate> topLevel(float bound)
 	{
 		const int level = m_grid.levelCount() - 1, n = static_cast<int>(m_queries.size());
 		const int step = m_group.g > 0 ? 2 * m_group.g + 1 : 1, first = m_group.g > 0 ? m_group.g : 0;
@@ -111,7 +126,7 @@ class CSearch
 					// the last group's middle may lie past the end: it is centred on
 					// the last rotation and shares a few members with the one before
 					TCandidate c{std::min(r, n - 1), dx, dy, level, 0.f};
-					c.score = score(c, m_group.g > 0);
+					c.score = score(c, bound, m_group.g > 0);
 					out.push_back(c);
 				}
 		std::sort(out.begin(), out.end(), byScore);
@@ -134,7 +149,8 @@ class CSearch
 				if (m_firstAbove) return best;
 				continue;
 			}
-			const auto sub = groups ? search(members(c), best.best.score) : search(children(c), best.best.score);
+			const auto sub = groups ? search(members(c, best.best.score), best.best.score)
+									: search(children(c, best.best.score), best.best.score);
 			if (sub.found) best = sub;
 			if (sub.found && m_firstAbove) return best;
 		}
@@ -153,21 +169,21 @@ class CSearch
 	}
 
 	/** The single rotations of a group node, at the level below, sorted. */
-	std::vector<TCandidate> members(const TCandidate& group)
+	std::vector<TCandidate> members(const TCandidate& group, float bound)
 	{
 		const int n = static_cast<int>(m_queries.size());
 		std::vector<TCandidate> out;
 		for (int r = std::max(0, group.rotation - m_group.g); r <= std::min(n - 1, group.rotation + m_group.g); ++r)
 		{
 			TCandidate c{r, group.dx, group.dy, group.level - 1, 0.f};
-			c.score = score(c);
+			c.score = score(c, bound);
 			out.push_back(c);
 		}
 		std::stable_sort(out.begin(), out.end(), byScore);
 		return out;
 	}
 
-	TChildren children(const TCandidate& c)
+	TChildren children(const TCandidate& c, float bound)
 	{
 		const int half = 1 << (c.level - 1);
 		TChildren out;
@@ -176,7 +192,7 @@ class CSearch
 			{
 				TCandidate child{c.rotation, c.dx + ox, c.dy + oy, c.level - 1, 0.f};
 				if (child.dx > m_w || child.dy > m_w) continue;
-				child.score = score(child);
+				child.score = score(child, bound);
 				size_t i = out.n++;  // insertion sort, stable like std::sort on so few
 				for (; i > 0 && byScore(child, out.c[i - 1]); --i) out.c[i] = out.c[i - 1];
 				out.c[i] = child;
@@ -202,7 +218,7 @@ TSearchResult branchAndBound(const CMultiResolutionGrid& grid, const std::vector
 							 bool firstAbove)
 {
 	CSearch s(grid, rotations, windowCells, excluded, firstAbove);
-	auto result = s.search(s.topLevel(), minScore, s.grouped());
+	auto result = s.search(s.topLevel(minScore), minScore, s.grouped());
 	result.nodesScored = s.nodesScored;
 	return result;
 }
