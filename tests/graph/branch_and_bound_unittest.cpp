@@ -111,6 +111,21 @@ TEST(BranchAndBound, FindsTheExhaustiveBestOverRotationGroups)
 			{
 				EXPECT_FLOAT_EQ(detail::branchAndBound(grid, rotations, w, 0.f, near).best.score, second);
 			}
+			// an exclusion wide enough to hold whole nodes (pruned unscored):
+			// still the exhaustive best outside it, and the existence test agrees
+			const int half = w, rotHalf = halfCount;
+			const std::function<bool(int, int, int)> wide = [&](int r, int dx, int dy) {
+				return std::abs(r - winner.rotation) <= rotHalf && std::hypot(dx - winner.dx, dy - winner.dy) <= half;
+			};
+			const float outside = exhaustiveBest(grid, rotations, w, wide);
+			const auto searched = detail::branchAndBound(grid, rotations, w, 0.f, wide);
+			EXPECT_EQ(searched.found, outside > 0);
+			if (outside > 0)
+			{
+				EXPECT_FLOAT_EQ(searched.best.score, outside);
+				EXPECT_FALSE(wide(searched.best.rotation, searched.best.dx, searched.best.dy));
+			}
+			EXPECT_EQ(detail::branchAndBound(grid, rotations, w, 0.95f * outside, wide, true).found, outside > 0);
 			++cases;
 		}
 	}

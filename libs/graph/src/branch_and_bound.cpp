@@ -149,6 +149,7 @@ class CSearch
 				if (m_firstAbove) return best;
 				continue;
 			}
+			if (whollyExcluded(c, groups)) continue;  // no leaf below it may be returned
 			const auto sub = groups ? search(members(c, best.best.score), best.best.score)
 									: search(children(c, best.best.score), best.best.score);
 			if (sub.found) best = sub;
@@ -161,6 +162,28 @@ class CSearch
 	size_t nodesScored = 0;
 
    private:
+	/** Whether every leaf under `c` is excluded. The excluded leaves of a
+	 * rotation form a disc of offsets and those of an offset an interval of
+	 * rotations (CCorrelativeScanMatcher's exclusion), so the corners of the
+	 * node's block at its first and last rotation decide for all of them.
+	 * Without this, the search for a second peak descended through the
+	 * first peak's own neighbourhood, the highest-scoring part of the window,
+	 * only to skip every leaf there. */
+	bool whollyExcluded(const TCandidate& c, bool group) const
+	{
+		if (!m_excluded) return false;
+		const int n = static_cast<int>(m_queries.size());
+		const int r0 = group ? std::max(0, c.rotation - m_group.g) : c.rotation;
+		const int r1 = group ? std::min(n - 1, c.rotation + m_group.g) : c.rotation;
+		const int size = group ? m_group.block : 1 << c.level;
+		const int x1 = std::min(c.dx + size - 1, m_w), y1 = std::min(c.dy + size - 1, m_w);
+		for (int r : {r0, r1})
+			for (int x : {c.dx, x1})
+				for (int y : {c.dy, y1})
+					if (!m_excluded(r, x, y)) return false;
+		return true;
+	}
+
 	const TSplitQuery& split(int rotation)
 	{
 		const auto r = static_cast<size_t>(rotation);

@@ -34,8 +34,11 @@ struct TSearchResult
 
 /** Finds the leaf (level 0) of highest score above minScore over offsets in
  * [-windowCells, windowCells]^2 for every rotation; leaves for which
- * `excluded(rotation, dx, dy)` is true are skipped. With firstAbove, the
- * first leaf found above minScore is returned (an existence test). */
+ * `excluded(rotation, dx, dy)` is true are skipped. The excluded offsets of
+ * one rotation must form a convex set and the excluded rotations of one
+ * offset an interval: a node whose corner leaves at its first and last
+ * rotation are all excluded is pruned whole. With firstAbove, the first leaf
+ * found above minScore is returned (an existence test). */
 TSearchResult branchAndBound(const CMultiResolutionGrid& grid, const std::vector<TRotatedQuery>& rotations,
 							 int windowCells, float minScore, const std::function<bool(int, int, int)>& excluded,
 							 bool firstAbove = false);
