@@ -17,6 +17,7 @@ TOdometrySelfCalibration options(bool heading = false, double prior_m = 10.0)
 	o.estimate_heading = heading;
 	o.prior_travel_m = prior_m;
 	o.min_scale_error = 0;  // applied at once (the band has its own test)
+	o.rebase_travel_m = 0;  // one fit over all intervals (re-basing has its own test)
 	return o;
 }
 }  // namespace
@@ -123,4 +124,44 @@ TEST(OdometrySelfCalibration, AppliesOnlyScaleErrorsBeyondTheFrontEndsOwnBias)
 	for (int i = 0; i < 4000; ++i) c.observe(step, CPose2D(0.495, 0, 0));
 	EXPECT_GT(c.state().distance_scale, 0.98);
 	EXPECT_TRUE(c.state().correction.enabled) << "once detected, the calibration stays applied";
+}
+
+TEST(OdometrySelfCalibration, RebasingReachesTheScaleTheMatchesFixOnlyInPart)
+{
+	// The matches fix half of each interval's distance; the other half follows
+	// the odometry as corrected at the time (the fused increment leans towards
+	// its prediction): fused = (0.5 * 0.95 + 0.5 * a) * 0.5 m for 0.5 m of
+	// odometry, a the scale applied. The fixed point is the true 0.95.
+	auto run = [](double rebase_m) {
+		auto o = options();
+		o.rebase_travel_m = rebase_m;
+		COdometrySelfCalibration c(o, 0.335);
+		const CPose2D step(0.5, 0, 0);
+		for (int i = 0; i < 800; ++i)  // 400 m
+		{
+			const double applied = c.correct(step).x() / 0.5;
+			c.observe(step, CPose2D((0.5 * 0.95 + 0.5 * applied) * 0.5, 0, 0));
+		}
+		return c.state();
+	};
+	const auto once = run(0), rebased = run(20);
+	// one fit over the run averages in the early, uncorrected intervals:
+	// 0.958 after 400 m (hand iteration of the same sums)
+	EXPECT_NEAR(once.distance_scale, 0.9579, 5e-4);
+	EXPECT_EQ(once.rebases, 0u);
+	// re-based every 20 m, each stretch halves the rest of the way
+	EXPECT_NEAR(rebased.distance_scale, 0.95, 5e-4);
+	EXPECT_EQ(rebased.rebases, 20u);
+	// a re-base does not move the scale by itself
+	auto o = options();
+	o.rebase_travel_m = 1.0;
+	COdometrySelfCalibration c(o, 0.335);
+	c.observe(CPose2D(0.5, 0, 0), CPose2D(0.45, 0, 0));
+	const double beforeRebase = c.state().distance_scale;
+	c.observe(CPose2D(0.5, 0, 0), CPose2D(0.45, 0, 0));  // 1 m reached: re-based after this fit
+	EXPECT_EQ(c.state().rebases, 1u);
+	EXPECT_LT(c.state().distance_scale, beforeRebase);
+	const double atRebase = c.state().distance_scale;
+	c.observe(CPose2D(0, 0, 0.5), CPose2D(0, 0, 0.5));  // no distance: the fit stays at the base
+	EXPECT_NEAR(c.state().distance_scale, atRebase, 1e-12);
 }

@@ -41,13 +41,28 @@ void COdometrySelfCalibration::observe(const mrpt::poses::CPose2D& odometry, con
 		return;
 	}
 	const double w = 1.0 / travel_m;  // odometry error grows like a random walk in travel
-	m_sumMatchedDistance += w * matched * s;
-	m_sumOdometryDistance += w * s * s;
+	const double based = m_baseScale * s;
+	m_sumMatchedDistance += w * matched * based;
+	m_sumOdometryDistance += w * based * based;
+	m_travelSinceRebase_m += std::abs(s);
 	m_hh += w * turn * turn, m_hs += w * turn * s, m_ss += w * s * s;
 	m_hy += w * turn * y, m_sy += w * s * y;
 	m_state.travel_m += std::abs(s);
 	++m_state.intervals;
 	refit();
+	rebaseIfDue();
+}
+
+void COdometrySelfCalibration::rebaseIfDue()
+{
+	if (m_opts.rebase_travel_m <= 0 || !m_state.correction.enabled || m_travelSinceRebase_m < m_opts.rebase_travel_m)
+		return;
+	// the prior now holds the fit at the scale reached (continuous: the
+	// scale is unchanged until new intervals arrive)
+	m_baseScale = m_state.distance_scale;
+	m_sumMatchedDistance = m_sumOdometryDistance = 0;
+	m_travelSinceRebase_m = 0;
+	++m_state.rebases;
 }
 
 void COdometrySelfCalibration::refit()
@@ -55,7 +70,7 @@ void COdometrySelfCalibration::refit()
 	const double P = m_opts.prior_travel_m;
 	const double lo = 1.0 - m_opts.max_scale_error, hi = 1.0 + m_opts.max_scale_error;
 	auto& st = m_state;
-	st.distance_scale = std::clamp((m_sumMatchedDistance + P) / (m_sumOdometryDistance + P), lo, hi);
+	st.distance_scale = std::clamp(m_baseScale * (m_sumMatchedDistance + P) / (m_sumOdometryDistance + P), lo, hi);
 	if (m_opts.estimate_heading)
 	{
 		// The prior's weight on b: P metres of wheel travel spent turning on
