@@ -73,21 +73,21 @@ void CPointIndex2D::rebuildGrid()
 	// counting sort of the live points by cell
 	const size_t cells = static_cast<size_t>(m_width) * static_cast<size_t>(m_height);
 	m_cellStart.assign(cells + 1, 0);
-	std::vector<uint32_t> cellOf(liveSize());
+	m_cellOf.resize(liveSize());
 	for (size_t i = m_firstLive; i < size(); ++i)
 	{
 		const int ix = std::min(m_width - 1, static_cast<int>((m_x[i] - m_x0) * m_invCell));
 		const int iy = std::min(m_height - 1, static_cast<int>((m_y[i] - m_y0) * m_invCell));
 		const uint32_t c = static_cast<uint32_t>(iy * m_width + ix);
-		cellOf[i - m_firstLive] = c;
+		m_cellOf[i - m_firstLive] = c;
 		++m_cellStart[c + 1];
 	}
 	for (size_t c = 0; c < cells; ++c) m_cellStart[c + 1] += m_cellStart[c];
 	m_sortedX.resize(liveSize()), m_sortedY.resize(liveSize()), m_sortedIndex.resize(liveSize());
-	std::vector<uint32_t> next(m_cellStart.begin(), m_cellStart.end() - 1);
+	m_next.assign(m_cellStart.begin(), m_cellStart.end() - 1);
 	for (size_t i = m_firstLive; i < size(); ++i)  // in index order: a cell's entries stay sorted by index
 	{
-		const uint32_t slot = next[cellOf[i - m_firstLive]]++;
+		const uint32_t slot = m_next[m_cellOf[i - m_firstLive]]++;
 		m_sortedX[slot] = m_x[i], m_sortedY[slot] = m_y[i], m_sortedIndex[slot] = static_cast<uint32_t>(i);
 	}
 }

@@ -64,6 +64,7 @@ class CPointIndex2D
 	std::vector<uint32_t> m_cellStart;
 	std::vector<float> m_sortedX, m_sortedY;
 	std::vector<uint32_t> m_sortedIndex;
+	std::vector<uint32_t> m_cellOf, m_next;  //!< rebuildGrid()'s scratch, kept between rebuilds
 };
 
 }  // namespace hslam::matching
