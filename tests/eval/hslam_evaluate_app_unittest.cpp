@@ -1,6 +1,8 @@
 /* hslam tests: the hslam-evaluate app end to end on files in a temp folder. */
 #include <gtest/gtest.h>
 #include <hslam/common/tum_trajectory.h>
+#include <hslam/io/CRawlogObservationWriter.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
 #include <hslam/testing/temp_dir.h>
 #include <hslam/testing/test_paths.h>
 
@@ -84,4 +86,52 @@ TEST(HslamEvaluateApp, HelpSucceedsAndBadArgumentsFail)
 	EXPECT_NE(readText(dir.file("err.txt")).find("--max-dt"), std::string::npos);
 	EXPECT_NE(runEvaluate(dir, dir.file("missing.tum") + " b.tum"), 0);
 	EXPECT_NE(readText(dir.file("err.txt")).find("missing.tum"), std::string::npos);
+}
+
+TEST(HslamEvaluateApp, RawlogComparesHowWellEachTrajectoryExplainsTheScans)
+{
+	// A robot standing still in a round room of radius 2 m: three identical
+	// scans. The reference says it stood still; the estimate moves it 0.1 m
+	// at the last scan, which misfits that pair by the mean radial part of
+	// the shift, 0.1 * 2 / pi = 0.064 m (> clearly_m = 0.03).
+	CTempDir dir;
+	{
+		hslam::io::CRawlogObservationWriter out(dir.file("room.rawlog"));
+		for (int k = 0; k < 3; ++k)
+		{
+			mrpt::obs::CObservation2DRangeScan scan;
+			scan.sensorLabel = "LASER";
+			scan.timestamp = mrpt::Clock::fromDouble(100.0 + 0.1 * k);
+			scan.aperture = static_cast<float>(M_PI);
+			scan.maxRange = 30;
+			scan.resizeScan(181);
+			for (size_t b = 0; b < 181; ++b) scan.setScanRange(b, 2.0f), scan.setScanRangeValidity(b, true);
+			out.write(scan);
+		}
+	}
+	auto ref = fixtures::straightLine(3, 0.0);
+	auto est = ref;
+	est[2].pose.x += 0.1;
+	hslam::common::writeTumFile(dir.file("ref.tum"), ref);
+	hslam::common::writeTumFile(dir.file("est.tum"), est);
+
+	ASSERT_EQ(runEvaluate(dir, dir.file("ref.tum") + " " + dir.file("est.tum") + " --rawlog " + dir.file("room.rawlog") +
+								   " --json " + dir.file("e.json")),
+			  0)
+		<< readText(dir.file("err.txt"));
+	const std::string out = readText(dir.file("out.txt"));
+	EXPECT_NE(out.find("estimate clearly worse: 1 pairs"), std::string::npos) << out;
+	const std::string json = readText(dir.file("e.json"));
+	EXPECT_NE(json.find("\"scan_pairs\": 2,"), std::string::npos) << json;
+	EXPECT_NE(json.find("\"scan_misfit_reference_mean_m\": 0,"), std::string::npos) << json;
+	EXPECT_NE(json.find("\"scan_pairs_estimate_clearly_worse\": 1,"), std::string::npos) << json;
+
+	// --laser-label alone means nothing: refused, not ignored
+	EXPECT_NE(runEvaluate(dir, dir.file("ref.tum") + " " + dir.file("est.tum") + " --laser-label LASER"), 0);
+	EXPECT_NE(readText(dir.file("err.txt")).find("--laser-label needs --rawlog"), std::string::npos);
+	// a label the rawlog does not have names the file
+	EXPECT_NE(runEvaluate(dir, dir.file("ref.tum") + " " + dir.file("est.tum") + " --rawlog " + dir.file("room.rawlog") +
+								   " --laser-label SICK"),
+			  0);
+	EXPECT_NE(readText(dir.file("err.txt")).find("room.rawlog: no scan has the label 'SICK'"), std::string::npos);
 }

@@ -62,20 +62,30 @@ TJsonFields evaluationFields(const TTrajectoryErrors& e)
 	return f;
 }
 
+void addScanConsistency(TJsonFields& f, const TScanConsistency& c)
+{
+	f.emplace_back("scan_pairs", jsonCount(c.pairs.size()));
+	f.emplace_back("scan_misfit_reference_mean_m", jsonNumber(c.reference_mean_m));
+	f.emplace_back("scan_misfit_estimate_mean_m", jsonNumber(c.estimate_mean_m));
+	f.emplace_back("scan_pairs_estimate_clearly_worse", jsonCount(c.estimate_worse.size()));
+	f.emplace_back("scan_pairs_estimate_clearly_better", jsonCount(c.estimate_better.size()));
+}
 }  // namespace
 
-std::string evaluationToJson(const TTrajectoryErrors& errors)
+std::string evaluationToJson(const TTrajectoryErrors& errors, const TScanConsistency* consistency)
 {
-	const TJsonFields fields = evaluationFields(errors);
+	TJsonFields fields = evaluationFields(errors);
+	if (consistency) addScanConsistency(fields, *consistency);
 	std::string out = "{\n";
 	for (size_t k = 0; k < fields.size(); ++k)
 		out += "  " + jsonString(fields[k].first) + ": " + fields[k].second + (k + 1 < fields.size() ? ",\n" : "\n");
 	return out + "}\n";
 }
 
-void writeEvaluationJson(const std::string& path, const TTrajectoryErrors& errors)
+void writeEvaluationJson(const std::string& path, const TTrajectoryErrors& errors,
+						 const TScanConsistency* consistency)
 {
-	common::writeTextFileAtomically(path, evaluationToJson(errors));
+	common::writeTextFileAtomically(path, evaluationToJson(errors, consistency));
 }
 
 }  // namespace hslam::eval

@@ -4,6 +4,8 @@
 #include <mrpt/core/bits_math.h>
 
 #include <iomanip>
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace hslam::eval
@@ -70,6 +72,34 @@ void printEvaluation(std::ostream& os, const TTrajectoryErrors& errors)
 	printHeader(text, errors);
 	printAte(text, errors.ate.position_m);
 	printRpe(text, errors.rpe);
+	os << text.str();
+}
+
+namespace
+{
+void printPairs(std::ostream& os, const char* title, std::vector<TScanPairMisfit> pairs, size_t listed)
+{
+	std::sort(pairs.begin(), pairs.end(), [](const auto& a, const auto& b)
+			  { return std::abs(a.estimate_m - a.reference_m) > std::abs(b.estimate_m - b.reference_m); });
+	os << "  " << title << ": " << pairs.size() << " pairs";
+	if (!pairs.empty()) os << " (t s: reference / estimate misfit m)";
+	os << "\n";
+	for (size_t k = 0; k < std::min(listed, pairs.size()); ++k)
+		os << "    t=" << std::setprecision(3) << std::fixed << pairs[k].t_s << "  " << pairs[k].reference_m << " / "
+		   << pairs[k].estimate_m << "\n";
+}
+}  // namespace
+
+void printScanConsistency(std::ostream& os, const TScanConsistency& c, size_t listed)
+{
+	std::ostringstream text;
+	text << "\nScan consistency (consecutive scans placed at each trajectory's poses; mean distance of a scan's\n"
+		 << "points to the previous scan's, each capped; lower is better):\n"
+		 << "  scans " << c.scans << ", pairs posed by both " << c.pairs.size() << "\n"
+		 << std::fixed << std::setprecision(4) << "  mean misfit: reference " << c.reference_mean_m << " m, estimate "
+		 << c.estimate_mean_m << " m\n";
+	printPairs(text, "estimate clearly worse", c.estimate_worse, listed);
+	printPairs(text, "estimate clearly better (the reference slipped)", c.estimate_better, listed);
 	os << text.str();
 }
 
