@@ -39,15 +39,22 @@ bool fitNormal(const Reference& ref, const std::vector<size_t>& idx, Eigen::Vect
 
 namespace
 {
-/** The covariance for `count` current points given by `pointAt(k)` (robot frame). */
-template <class Reference, class PointAt>
-Eigen::Matrix3d alignmentCovariance(const Reference& reference, size_t count, PointAt pointAt,
-									const mrpt::poses::CPose2D& pose, const TGeometricCovarianceOptions& o,
-									size_t* matchedPoints)
+/** Point-to-line normal equations of `count` current points (robot frame,
+ * `pointAt(k)`) at `pose`: H = sum J J', g = sum J r, r the signed distance
+ * along the reference normal, J = [n_x, n_y, n . d(R p)/dtheta]. */
+struct TNormalEquations
 {
 	Eigen::Matrix3d H = Eigen::Matrix3d::Zero();
+	Eigen::Vector3d g = Eigen::Vector3d::Zero();
 	double residual2 = 0;
 	size_t matched = 0;
+};
+
+template <class Reference, class PointAt>
+TNormalEquations normalEquations(const Reference& reference, size_t count, PointAt pointAt,
+								 const mrpt::poses::CPose2D& pose, const TGeometricCovarianceOptions& o)
+{
+	TNormalEquations e;
 	std::vector<size_t> idx;
 	std::vector<float> dist2;
 	for (size_t k = 0; k < count; ++k)
@@ -61,10 +68,25 @@ Eigen::Matrix3d alignmentCovariance(const Reference& reference, size_t count, Po
 		const Eigen::Vector2d q = reference.point(idx[0]);
 		const Eigen::Vector2d arm(w.x - pose.x(), w.y - pose.y());  // R p
 		const Eigen::Vector3d J(n.x(), n.y(), n.x() * -arm.y() + n.y() * arm.x());
-		H += J * J.transpose();
-		residual2 += std::pow(n.dot(Eigen::Vector2d(w.x, w.y) - q), 2);
-		++matched;
+		const double r = n.dot(Eigen::Vector2d(w.x, w.y) - q);
+		e.H += J * J.transpose();
+		e.g += J * r;
+		e.residual2 += r * r;
+		++e.matched;
 	}
+	return e;
+}
+
+/** The covariance for `count` current points given by `pointAt(k)` (robot frame). */
+template <class Reference, class PointAt>
+Eigen::Matrix3d alignmentCovariance(const Reference& reference, size_t count, PointAt pointAt,
+									const mrpt::poses::CPose2D& pose, const TGeometricCovarianceOptions& o,
+									size_t* matchedPoints)
+{
+	const TNormalEquations e = normalEquations(reference, count, pointAt, pose, o);
+	const Eigen::Matrix3d& H = e.H;
+	const double residual2 = e.residual2;
+	const size_t matched = e.matched;
 	if (matchedPoints) *matchedPoints = matched;
 	const double cap2 = o.max_std_m * o.max_std_m;
 	if (matched < 10) return Eigen::Matrix3d::Identity() * cap2;
@@ -124,6 +146,27 @@ Eigen::Matrix3d geometricAlignmentCovariance(const CPointIndex2D& reference,
 											 const TGeometricCovarianceOptions& o, size_t* matchedPoints)
 {
 	return mapAlignmentCovariance(TIndexReference{reference}, current, pose, o, matchedPoints);
+}
+
+mrpt::poses::CPose2D refinedAlongNormals(const CPointIndex2D& reference, const mrpt::maps::CSimplePointsMap& current,
+										 mrpt::poses::CPose2D pose, const TGeometricCovarianceOptions& o, int steps)
+{
+	const auto& xs = current.getPointsBufferRef_x();
+	const auto& ys = current.getPointsBufferRef_y();
+	const auto pointAt = [&](size_t k) { return mrpt::math::TPoint2D(xs[k], ys[k]); };
+	for (int step = 0; step < steps; ++step)
+	{
+		const TNormalEquations e = normalEquations(TIndexReference{reference}, current.size(), pointAt, pose, o);
+		if (e.matched < 10) break;
+		// Damped (Levenberg): a direction no normal constrains (a corridor's
+		// axis) has no gradient either and stays where point-to-point ICP
+		// left it.
+		const Eigen::Matrix3d A = e.H + Eigen::Matrix3d::Identity() * (1e-3 * e.H.trace() / 3.0 + 1e-9);
+		const Eigen::Vector3d d = -A.ldlt().solve(e.g);
+		pose = mrpt::poses::CPose2D(pose.x() + d[0], pose.y() + d[1], pose.phi() + d[2]);
+		if (std::hypot(d[0], d[1]) < 1e-4 && std::abs(d[2]) < 1e-5) break;
+	}
+	return pose;
 }
 
 }  // namespace hslam::matching

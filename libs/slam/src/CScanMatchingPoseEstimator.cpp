@@ -15,9 +15,16 @@ namespace
 {
 fusion::TPoseVec toVec(const mrpt::poses::CPose2D& p) { return {p.x(), p.y(), p.phi()}; }
 mrpt::poses::CPose2D toPose(const fusion::TPoseVec& v) { return {v[0], v[1], v[2]}; }
-matching::CIcpMatcher::TOptions withoutDegeneracyCap(matching::CIcpMatcher::TOptions o)
+/** The ICP used without an informative prediction (gap, frozen or stalled
+ * odometry, a timed match). */
+matching::CIcpMatcher::TOptions withoutPrior(matching::CIcpMatcher::TOptions o)
 {
 	o.geometric.degenerate_min_fraction = 0;
+	// Restarts keep the result nearest the prediction among those pairing as
+	// many points; for a badly fitting first result that is only a choice
+	// when the prediction means something (simulated lab with its odometry
+	// removed, lines+icp: ATE 0.537 m with these restarts, below 0.1 without).
+	o.restart_below_fit = 0;
 	return o;
 }
 }  // namespace
@@ -42,7 +49,7 @@ CScanMatchingPoseEstimator::CScanMatchingPoseEstimator(const TPoseEstimationOpti
 												features::lineExtractorSection(m_extraction.method))),
 	  m_lineMatcher(common::loadedOptions<matching::CLineScanMatcher::TOptions>(cfg, "line_matching")),
 	  m_icp(common::loadedOptions<matching::CIcpMatcher::TOptions>(cfg, "icp")),
-	  m_icpWithoutPrior(withoutDegeneracyCap(m_icp.options())),
+	  m_icpWithoutPrior(withoutPrior(m_icp.options())),
 	  m_keyframes(common::loadedOptions<matching::CKeyframePointMap::TOptions>(cfg, "icp_map")),
 	  m_store(common::loadedOptions<matching::CKeyframeStore::TOptions>(cfg, "keyframes")),
 	  m_pointToLine(common::loadedOptions<matching::CPointToLineIcp::TOptions>(cfg, "map_matching")),

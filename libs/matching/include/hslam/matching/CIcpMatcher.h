@@ -5,8 +5,9 @@
  *
  * Multi-start: ICP only converges from seeds inside its basin; a heading
  * error of 10-20 deg (seen on real logs after sharp turns) is outside it. When
- * the first result pairs fewer than restart_below_goodness of the points, ICP
- * is restarted from seeds rotated by +-1 and +-2 steps (step = the seed's
+ * the first result pairs fewer than restart_below_goodness of the points, or
+ * fits the reference worse than restart_below_fit (alignment_fit.h: a wrong
+ * basin can pair most points), ICP is restarted from seeds rotated by +-1 and +-2 steps (step = the seed's
  * heading standard deviation, clamped to [restart_min_step, restart_max_step])
  * and, among the results paired nearly as well as the best, the one closest
  * to the prior (Mahalanobis distance) is kept.
@@ -58,7 +59,12 @@ class CIcpMatcher
 		double min_goodness = 0.5;  //!< below: weak match (fraction of points paired at the end)
 		double fail_goodness = 0.2;  //!< below: failed
 		double restart_below_goodness = 0.7;  //!< multi-start when the first goodness is lower; 0 = never
-		double restart_goodness_tolerance = 0.05;  //!< results this close to the best goodness compete on prior distance
+		/** ...or when its fit (seed_fit_sigma_m) is lower; 0 = by goodness only. */
+		double restart_below_fit = 0.7;
+		double restart_goodness_tolerance = 0.05;
+		/** Point-to-line steps after point-to-point ICP (engine = cached;
+		 * icp_covariance.h refinedAlongNormals); 0 = none. */
+		int point_to_line_steps = 0;  //!< results this close to the best goodness compete on prior distance
 		double restart_min_step_rad = 3.0 * M_PI / 180.0;
 		double restart_max_step_rad = 15.0 * M_PI / 180.0;
 		/** Sigma (m) of the fit that chooses between the results of several
@@ -93,6 +99,8 @@ class CIcpMatcher
 			v.real("min_goodness", min_goodness, 0.0, 1.0);
 			v.real("fail_goodness", fail_goodness, 0.0, 1.0);
 			v.real("restart_below_goodness", restart_below_goodness, 0.0, 1.0);
+			v.real("restart_below_fit", restart_below_fit, 0.0, 1.0);
+			v.integer("point_to_line_steps", point_to_line_steps, 0, 50);
 			v.real("restart_goodness_tolerance", restart_goodness_tolerance, 0.0, 1.0);
 			v.degrees("restart_min_step_deg", restart_min_step_rad, 0.1, 90.0);
 			v.degrees("restart_max_step_deg", restart_max_step_rad, 0.1, 90.0);
@@ -126,6 +134,8 @@ class CIcpMatcher
 	const TOptions& options() const { return m_options; }
 
    private:
+	/** Whether a first result is also restarted on its fit (restart_below_fit, seed_fit_sigma_m > 0). */
+	bool restartsOnFit() const;
 	/** The first alignment, or the best of the restarts around the prior. */
 	template <class AlignAt>
 	TPoseMatch bestOfRestarts(AlignAt alignAt, const mrpt::poses::CPose2D& initialGuess,

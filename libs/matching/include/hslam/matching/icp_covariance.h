@@ -58,4 +58,15 @@ Eigen::Matrix3d geometricAlignmentCovariance(const CPointIndex2D& reference,
 											 const mrpt::poses::CPose2D& pose,
 											 const TGeometricCovarianceOptions& options, size_t* matchedPoints = nullptr);
 
+/** `pose` moved by up to `steps` damped Gauss-Newton steps on the same
+ * point-to-line residuals (each point along its reference normal).
+ * Point-to-point ICP on walls sampled every few centimetres has fixed points
+ * short of the truth: a scan pairs with its neighbours along the wall, and
+ * that pull holds the pose (a noise-free room: 1.1 deg off from a 2 deg
+ * seed, 2.3 deg from 10-90 deg, with either ICP engine). Along a normal
+ * there is no such pull. */
+mrpt::poses::CPose2D refinedAlongNormals(const CPointIndex2D& reference, const mrpt::maps::CSimplePointsMap& current,
+										 mrpt::poses::CPose2D pose, const TGeometricCovarianceOptions& options,
+										 int steps);
+
 }  // namespace hslam::matching
