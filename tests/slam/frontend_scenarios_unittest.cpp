@@ -274,6 +274,12 @@ TEST(FrontEndScenarios, LateOdometryIsReadAtTheScansTime)
 			  << twice.evaluation->ate.position_m.rmse << " m\n";
 	EXPECT_NE(out.str().find("second pass"), std::string::npos);
 	EXPECT_LT(twice.evaluation->ate.position_m.rmse, 0.15);  // measured 0.083 m
+	// with a reference, evaluation.json also says how well each trajectory
+	// explains the scans (eval/scan_consistency.h)
+	const std::string json = hslam::testing::readTextFile(dir.file("batch") + "/evaluation.json");
+	EXPECT_NE(json.find("\"scan_misfit_reference_mean_m\": "), std::string::npos) << json;
+	EXPECT_NE(json.find("\"scan_pairs_estimate_clearly_worse\": "), std::string::npos) << json;
+	EXPECT_NE(out.str().find("Scan consistency"), std::string::npos);
 }
 
 TEST(FrontEndScenarios, OpenHallIsBetterThanOdometry)

@@ -4,6 +4,7 @@
 #include <hslam/eval/evaluate_trajectory.h>
 #include <hslam/eval/evaluation_json.h>
 #include <hslam/eval/evaluation_table.h>
+#include <hslam/eval/scan_consistency.h>
 #include <hslam/batch/CBatchProcessor.h>
 #include <hslam/slam/loop_closure_outputs.h>
 #include <hslam/slam/mapping_config.h>
@@ -17,6 +18,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <fstream>
 
 namespace hslam::batch
@@ -221,6 +223,29 @@ void CBatchProcessor::printMatchSummary(const slam::CMappingPipeline& pipeline)
 			  << " rejected by the UKF gate\n";
 }
 
+std::optional<eval::TScanConsistency> CBatchProcessor::scanConsistency(const slam::CMappingPipeline& pipeline,
+																	   const common::TTrajectory2D& reference,
+																	   const TBatchResult& result)
+{
+	// How well the reference and the estimate explain the scans (the
+	// reference's own slips, docs/pose-estimation.md). Only over a rawlog read
+	// to its end, and for one laser.
+	if (!result.input_error.empty()) return std::nullopt;
+	try
+	{
+		eval::TScanConsistencyOptions o;
+		const auto scans = eval::readScanPoints(m_request.input_rawlog, pipeline.processOptions().laser_label, o.max_range_m);
+		auto c = eval::compareScanConsistency(scans, reference, pipeline.finalTrajectory(), o);
+		eval::printScanConsistency(m_out, c, 5);
+		return c;
+	}
+	catch (const std::exception& e)
+	{
+		m_out << "\nScan consistency not measured: " << e.what() << "\n";
+		return std::nullopt;
+	}
+}
+
 void CBatchProcessor::evaluate(const slam::CMappingPipeline& pipeline, TBatchResult& result)
 {
 	const auto reference = common::readTumFile(m_request.ground_truth_tum);
@@ -230,7 +255,8 @@ void CBatchProcessor::evaluate(const slam::CMappingPipeline& pipeline, TBatchRes
 	const auto errors = eval::evaluateTrajectory(reference, pipeline.finalTrajectory(), options);
 	m_out << "\nEvaluation against " << m_request.ground_truth_tum << ":\n";
 	eval::printEvaluation(m_out, errors);
-	eval::writeEvaluationJson(m_request.output_dir + "/evaluation.json", errors);
+	const auto consistency = scanConsistency(pipeline, reference, result);
+	eval::writeEvaluationJson(m_request.output_dir + "/evaluation.json", errors, consistency ? &*consistency : nullptr);
 	if (pipeline.loopClosureStage())  // the online (filtered) trajectory too, for before/after
 	{
 		options.estimate_label = m_request.output_dir + "/trajectory_online.tum";

@@ -5,6 +5,9 @@
  * reading, but everything processed before it is still written. */
 #pragma once
 
+#include <hslam/eval/scan_consistency.h>
+#include <optional>
+
 #include <hslam/eval/evaluate_trajectory.h>
 #include <hslam/slam/CMappingPipeline.h>
 #include <hslam/slam/mapping_config.h>
@@ -60,6 +63,13 @@ class CBatchProcessor
 	std::unique_ptr<slam::CMappingPipeline> processRawlog(slam::TMappingConfig& config, TBatchResult& result);
 	void readRawlog(slam::CMappingPipeline& pipeline, TBatchResult& result);
 	void evaluate(const slam::CMappingPipeline& pipeline, TBatchResult& result);
+	/** Scan-pair misfit of the reference and the final trajectory
+	 * (eval/scan_consistency.h), printed; nullopt (and why, printed) when
+	 * the rawlog was not read to its end or has several lasers and no
+	 * [process] laser_label. */
+	std::optional<eval::TScanConsistency> scanConsistency(const slam::CMappingPipeline& pipeline,
+														  const common::TTrajectory2D& reference,
+														  const TBatchResult& result);
 	void writeEffectiveConfig(const slam::CMappingPipeline& pipeline, const slam::TOutputOptions& outputOptions);
 	void printSummary(const slam::CMappingPipeline& pipeline, const TBatchResult& result);
 	void printMatchSummary(const slam::CMappingPipeline& pipeline);

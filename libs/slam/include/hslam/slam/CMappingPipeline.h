@@ -127,6 +127,7 @@ class CMappingPipeline
 	common::CStageTimer& timer() { return m_timer; }
 	const common::CStageTimer& timer() const { return m_timer; }
 	const TPipelineCounters& counters() const { return m_counters; }
+	const TProcessOptions& processOptions() const { return m_processOptions; }
 	std::string poseEstimatorName() const { return m_estimator->name(); }
 
 	/** Dynamic object filter ([dynamic_objects] enabled = true), else null. */
