@@ -303,7 +303,11 @@ void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, c
 		lineMatch = m_lineMatcher.match(*m_previousFrame, frame, m_sinceMatch, m_sinceMatchCov);
 	}
 	const bool lineUsable = lineMatch && lineMatch->quality != EMatchQuality::failed;
-	const bool wantIcp = usesIcp() && dueForIcp() &&
+	// A failed line match leaves this scan unmeasured: ICP runs even before
+	// it is due (intel t = 2414.98 s: odometry claimed no turn over 0.27 m,
+	// the lines failed, the robot had turned 8 deg, kept until the next ICP).
+	const bool lineFailed = lineMatch && !lineUsable;
+	const bool wantIcp = usesIcp() && (dueForIcp() || lineFailed) &&
 						 (m_options.method == "icp" || m_options.icp_always || !lineUsable ||
 						  lineMatch->quality == EMatchQuality::weak);
 	std::optional<matching::TPoseMatch> icpMatch;
