@@ -123,13 +123,12 @@ TPoseMatch CIcpMatcher::match(const CPointIndex2D& reference, const mrpt::maps::
 		return m;
 	};
 	TPoseMatch best = bestOfRestarts(alignAt, initialGuess, initialCov);
-	if (m_options.point_to_line_steps > 0)
-	{
+	const bool refined = m_options.point_to_line_steps > 0;
+	if (refined)
 		best.pose = refinedAlongNormals(reference, current, best.pose, m_options.geometric, m_options.point_to_line_steps);
-		best.fit = -1;  // recomputed at the refined pose below
-	}
 	best.covariance = geometricAlignmentCovariance(reference, current, best.pose, m_options.geometric);
-	if (!restartsOnFit() || best.fit < 0) best.fit = alignmentFit(reference, current, best.pose, m_options.seed_fit_sigma_m);
+	if (refined || !restartsOnFit())  // else alignAt computed it at this pose
+		best.fit = alignmentFit(reference, current, best.pose, m_options.seed_fit_sigma_m);
 	return withQuality(best);
 }
 

@@ -292,6 +292,19 @@ void CScanMatchingPoseEstimator::fuse(const matching::TPoseMatch& match, bool re
 	estimate.match_nis = result.nis;
 }
 
+bool CScanMatchingPoseEstimator::wantsIcp(const std::optional<matching::TPoseMatch>& lineMatch) const
+{
+	using matching::EMatchQuality;
+	const bool lineUsable = lineMatch && lineMatch->quality != EMatchQuality::failed;
+	// A failed line match leaves this scan unmeasured: ICP runs even before
+	// it is due (intel t = 2414.98 s: odometry claimed no turn over 0.27 m,
+	// the lines failed, the robot had turned 8 deg, kept until the next ICP).
+	const bool lineFailed = lineMatch && !lineUsable;
+	return usesIcp() && (dueForIcp() || lineFailed) &&
+		   (m_options.method == "icp" || m_options.icp_always || !lineUsable ||
+			lineMatch->quality == EMatchQuality::weak);
+}
+
 void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, const common::TRangeData& scan,
 											  TPoseEstimate& estimate)
 {
@@ -303,13 +316,7 @@ void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, c
 		lineMatch = m_lineMatcher.match(*m_previousFrame, frame, m_sinceMatch, m_sinceMatchCov);
 	}
 	const bool lineUsable = lineMatch && lineMatch->quality != EMatchQuality::failed;
-	// A failed line match leaves this scan unmeasured: ICP runs even before
-	// it is due (intel t = 2414.98 s: odometry claimed no turn over 0.27 m,
-	// the lines failed, the robot had turned 8 deg, kept until the next ICP).
-	const bool lineFailed = lineMatch && !lineUsable;
-	const bool wantIcp = usesIcp() && (dueForIcp() || lineFailed) &&
-						 (m_options.method == "icp" || m_options.icp_always || !lineUsable ||
-						  lineMatch->quality == EMatchQuality::weak);
+	const bool wantIcp = wantsIcp(lineMatch);
 	std::optional<matching::TPoseMatch> icpMatch;
 	std::vector<matching::TPoseMatch> icpResults;  // one per seed run
 	const matching::TPoseMatch* refusedTrack = nullptr;  // its result, when it competes with the chosen one

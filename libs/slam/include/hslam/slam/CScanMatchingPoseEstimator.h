@@ -122,6 +122,9 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	bool dueForIcp() const;
 	matching::TLineScanFrame makeFrame(const common::TRangeData& scan);
 	void predict(const TOdometryIncrement& increment, const TMotionPrior& prior);
+	/** Whether this scan is matched by ICP: when due (or its line match
+	 * failed) and the method asks for ICP beside a usable line match. */
+	bool wantsIcp(const std::optional<matching::TPoseMatch>& lineMatch) const;
 	void matchAndFuse(matching::TLineScanFrame& frame, const common::TRangeData& scan, TPoseEstimate& estimate);
 	/** Restarts the filter where the refused matches put the robot when
 	 * they made the motion prior declare a stall (seed_refused_matches). */
