@@ -13,8 +13,11 @@
 #include <hslam/matching/CPointIndex2D.h>
 #include <hslam/matching/alignment_fit.h>
 #include <hslam/matching/scan_points.h>
+#include <mrpt/core/bits_math.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <vector>
 
 using namespace hslam::matching;
@@ -98,4 +101,49 @@ TEST(AlignmentFit, TellsApartTwoPosesAThresholdCountCannot)
 	EXPECT_NEAR(nearFit, std::exp(-0.32), 2e-3);
 	EXPECT_NEAR(farFit, std::exp(-2.88), 2e-3);
 	EXPECT_GT(nearFit, 10 * farFit);
+}
+
+namespace
+{
+/** A 1 deg, 181-beam scan from (x0, 0) facing +x down a corridor between
+ * the walls y = +-1 that ends at x = 8, in the robot frame. */
+mrpt::maps::CSimplePointsMap corridorScanFrom(double x0)
+{
+	mrpt::maps::CSimplePointsMap m;
+	for (int b = -90; b <= 90; ++b)
+	{
+		const double a = mrpt::DEG2RAD(static_cast<double>(b)), c = std::cos(a), s = std::sin(a);
+		double range = c > 0 ? (8.0 - x0) / c : 1e9;  // the end wall
+		if (std::abs(s) > 1e-9) range = std::min(range, 1.0 / std::abs(s));  // a side wall
+		m.insertPointFast(static_cast<float>(range * c), static_cast<float>(range * s), 0.f);
+	}
+	return m;
+}
+}  // namespace
+
+TEST(AlignmentFit, SegmentsDoNotFavourTheReferenceScansOwnPose)
+{
+	// The reference scan from x = 0, the scan from x = 0.3 m. Placed at zero
+	// motion the scan's 166 side-wall points land exactly on reference points
+	// (same bearings, same walls) and only its 15 end-wall points are off by
+	// 0.3 m; at the true pose the side-wall points fall between the
+	// reference's samples, which lie 0.16 m apart 3 m ahead and 0.44 m apart
+	// 5 m ahead. Nearest points prefer zero motion; segments between
+	// neighbouring samples (at most 0.5 m long) prefer the true pose (the
+	// points more than 5.3 m ahead, samples over 0.5 m apart, still fit badly).
+	const auto reference = corridorScanFrom(0.0);
+	const auto scan = corridorScanFrom(0.3);
+	const CPose2D truth(0.3, 0, 0), zero(0, 0, 0);
+	const double pointTrue = alignmentFit(reference, scan, truth, kSigma_m);
+	const double pointZero = alignmentFit(reference, scan, zero, kSigma_m);
+	EXPECT_NEAR(pointZero, 166.0 / 181.0, 1e-3);
+	EXPECT_LT(pointTrue, pointZero - 0.04);  // 0.859 against 0.917
+	const double segmentTrue = alignmentFit(reference, scan, truth, kSigma_m, 0.5);
+	const double segmentZero = alignmentFit(reference, scan, zero, kSigma_m, 0.5);
+	EXPECT_NEAR(segmentZero, 166.0 / 181.0, 1e-3);
+	EXPECT_GT(segmentTrue, segmentZero + 0.03);  // 0.956 against 0.917
+	// segments longer than the limit are not bridged: 0.01 m keeps nearest points
+	EXPECT_NEAR(alignmentFit(reference, scan, truth, kSigma_m, 0.01), pointTrue, 1e-9);
+	std::cout << "corridor fits, nearest point: true " << pointTrue << ", zero " << pointZero
+			  << "; segment: true " << segmentTrue << ", zero " << segmentZero << "\n";
 }

@@ -98,7 +98,7 @@ TPoseMatch CIcpMatcher::match(const mrpt::maps::CSimplePointsMap& reference, con
 	const auto alignAt = [&](const mrpt::poses::CPose2D& seed)
 	{
 		TPoseMatch m = alignOnce(reference, current, seed, initialCov);
-		if (restartsOnFit()) m.fit = alignmentFit(reference, current, m.pose, m_options.seed_fit_sigma_m);
+		if (restartsOnFit()) m.fit = fit(reference, current, m.pose);
 		return m;
 	};
 	return finished(bestOfRestarts(alignAt, initialGuess, initialCov), reference, current);
@@ -119,7 +119,7 @@ TPoseMatch CIcpMatcher::match(const CPointIndex2D& reference, const mrpt::maps::
 		m.pose = r.pose;
 		m.score = r.goodness;
 		m.correspondences = static_cast<size_t>(std::lround(r.goodness * current.size()));
-		if (restartsOnFit()) m.fit = alignmentFit(reference, current, m.pose, m_options.seed_fit_sigma_m);
+		if (restartsOnFit()) m.fit = fit(reference, current, m.pose);
 		return m;
 	};
 	TPoseMatch best = bestOfRestarts(alignAt, initialGuess, initialCov);
@@ -128,7 +128,7 @@ TPoseMatch CIcpMatcher::match(const CPointIndex2D& reference, const mrpt::maps::
 		best.pose = refinedAlongNormals(reference, current, best.pose, m_options.geometric, m_options.point_to_line_steps);
 	best.covariance = geometricAlignmentCovariance(reference, current, best.pose, m_options.geometric);
 	if (refined || !restartsOnFit())  // else alignAt computed it at this pose
-		best.fit = alignmentFit(reference, current, best.pose, m_options.seed_fit_sigma_m);
+		best.fit = fit(reference, current, best.pose);
 	return withQuality(best);
 }
 
@@ -163,8 +163,20 @@ TPoseMatch CIcpMatcher::finished(TPoseMatch result, const mrpt::maps::CSimplePoi
 	// for the chosen result, not for every restart.
 	if (m_options.covariance == "geometric")
 		result.covariance = geometricAlignmentCovariance(reference, current, result.pose, m_options.geometric);
-	result.fit = alignmentFit(reference, current, result.pose, m_options.seed_fit_sigma_m);
+	result.fit = fit(reference, current, result.pose);
 	return withQuality(std::move(result));
+}
+
+double CIcpMatcher::fit(const mrpt::maps::CSimplePointsMap& reference, const mrpt::maps::CSimplePointsMap& current,
+						const mrpt::poses::CPose2D& pose) const
+{
+	return alignmentFit(reference, current, pose, m_options.seed_fit_sigma_m, m_options.seed_fit_max_segment_m);
+}
+
+double CIcpMatcher::fit(const CPointIndex2D& reference, const mrpt::maps::CSimplePointsMap& current,
+						const mrpt::poses::CPose2D& pose) const
+{
+	return alignmentFit(reference, current, pose, m_options.seed_fit_sigma_m, m_options.seed_fit_max_segment_m);
 }
 
 bool CIcpMatcher::restartsOnFit() const { return m_options.restart_below_fit > 0 && m_options.seed_fit_sigma_m > 0; }

@@ -61,16 +61,26 @@ class CIcpMatcher
 		double restart_below_goodness = 0.7;  //!< multi-start when the first goodness is lower; 0 = never
 		/** ...or when its fit (seed_fit_sigma_m) is lower; 0 = by goodness only. */
 		double restart_below_fit = 0.7;
-		double restart_goodness_tolerance = 0.05;
+		double restart_goodness_tolerance = 0.05;  //!< results this close to the best goodness compete on prior distance
 		/** Point-to-line steps after point-to-point ICP (engine = cached;
 		 * icp_covariance.h refinedAlongNormals); 0 = none. */
-		int point_to_line_steps = 0;  //!< results this close to the best goodness compete on prior distance
+		int point_to_line_steps = 0;
 		double restart_min_step_rad = 3.0 * M_PI / 180.0;
 		double restart_max_step_rad = 15.0 * M_PI / 180.0;
 		/** Sigma (m) of the fit that chooses between the results of several
 		 * seeds (alignment_fit.h); 0 = by goodness, a later seed winning only
 		 * by more than restart_goodness_tolerance. */
 		double seed_fit_sigma_m = 0.05;
+		/** The fit's distance is to the nearest reference segment at most
+		 * this long (alignment_fit.h); 0 = to the nearest point. */
+		double seed_fit_max_segment_m = 0.0;
+		/** A match checking odometry's claim that the robot stood still (a
+		 * timed match, CScanMatchingPoseEstimator) uses these instead of
+		 * point_to_line_steps and seed_fit_max_segment_m: its reference
+		 * scan was, if the claim is true, taken from the same pose, and
+		 * point-to-point measures then favour zero motion (alignment_fit.h). */
+		int standstill_point_to_line_steps = 10;
+		double standstill_fit_max_segment_m = 0.5;
 		/** Results of other seeds that fit about as well widen the chosen
 		 * one's covariance (competing_basins.h). */
 		TCompetingBasinOptions competing;
@@ -105,6 +115,9 @@ class CIcpMatcher
 			v.degrees("restart_min_step_deg", restart_min_step_rad, 0.1, 90.0);
 			v.degrees("restart_max_step_deg", restart_max_step_rad, 0.1, 90.0);
 			v.real("seed_fit_sigma_m", seed_fit_sigma_m, 0.0, 1.0);
+			v.real("seed_fit_max_segment_m", seed_fit_max_segment_m, 0.0, 10.0);
+			v.integer("standstill_point_to_line_steps", standstill_point_to_line_steps, 0, 50);
+			v.real("standstill_fit_max_segment_m", standstill_fit_max_segment_m, 0.0, 10.0);
 			v.real("competing_fit_ratio", competing.fit_ratio, 0.0, 1.0);
 			v.real("competing_min_chi2", competing.min_distance_chi2, 0.0, 1000.0);
 			v.choice("covariance", covariance, {"geometric", "mrpt"});
@@ -130,6 +143,13 @@ class CIcpMatcher
 	 * classic algorithm only). */
 	TPoseMatch match(const CPointIndex2D& reference, const mrpt::maps::CSimplePointsMap& current,
 					 const mrpt::poses::CPose2D& initialGuess, const Eigen::Matrix3d& initialCov) const;
+
+	/** alignmentFit of `current` at `pose` with this matcher's fit options
+	 * (seed_fit_sigma_m, seed_fit_max_segment_m). */
+	double fit(const mrpt::maps::CSimplePointsMap& reference, const mrpt::maps::CSimplePointsMap& current,
+			   const mrpt::poses::CPose2D& pose) const;
+	double fit(const CPointIndex2D& reference, const mrpt::maps::CSimplePointsMap& current,
+			   const mrpt::poses::CPose2D& pose) const;
 
 	const TOptions& options() const { return m_options; }
 

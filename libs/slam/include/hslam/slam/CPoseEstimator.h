@@ -69,6 +69,10 @@ struct TPoseEstimationOptions
 	 * only noticed when a match finds the motion odometry missed (issue 12).
 	 * 0 = never by time. */
 	double match_every_s = 0.5;
+	/** A timed match after odometry reported less travel than this since
+	 * the last ICP checks a standstill claim ([icp] standstill_*). */
+	double standstill_max_m = 0.01;
+	double standstill_max_rad = 0.5 * M_PI / 180.0;
 	/** icp and lines+icp: "mrpt" = MRPT's point-to-point ICP against the
 	 * points of recent keyframes ([icp], [icp_map]); "point_to_line" =
 	 * CPointToLineIcp against the local map of the keyframe store
@@ -91,6 +95,8 @@ struct TPoseEstimationOptions
 		v.degrees("icp_every_deg", icp_every_rad, 0.0, 360.0);
 		v.flag("icp_always", icp_always);
 		v.real("match_every_s", match_every_s, 0.0, 1e6);
+		v.real("standstill_max_m", standstill_max_m, 0.0, 100.0);
+		v.degrees("standstill_max_deg", standstill_max_rad, 0.0, 360.0);
 		v.choice("icp_matcher", icp_matcher, {"mrpt", "point_to_line", "mrpt+point_to_line"});
 		v.flag("seed_refused_matches", seed_refused_matches);
 	}

@@ -25,7 +25,10 @@
  * (no odometry at all) keeps the large covariance of [ukf]
  * unknown_motion_*_std, so the next match is free to correct it. A match also
  * runs every match_every_s of time while odometry reports no travel, so
- * odometry that stopped or creeps is noticed.
+ * odometry that stopped or creeps is noticed; one after odometry reported no
+ * travel at all (standstill_max_m / _deg) is refined point-to-line and judged
+ * by the point-to-segment fit ([icp] standstill_*): point-to-point measures
+ * favour zero motion against a reference scan taken from the claimed pose.
  *
  * INI sections: [pose_estimation], [line_extraction], [line_extraction_<method>], [line_matching],
  * [icp], [icp_map], [ukf], [odometry_noise], [motion_prior]. */
@@ -120,6 +123,9 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	bool dueByTime(double t_s) const;
 	bool dueForMatch(double t_s) const;
 	bool dueForIcp() const;
+	/** The ICP matcher for the match now due: without the degeneracy cap after a
+	 * gap, the standstill check for a timed match, m_icp otherwise. */
+	const matching::CIcpMatcher& icpForThisMatch() const;
 	matching::TLineScanFrame makeFrame(const common::TRangeData& scan);
 	void predict(const TOdometryIncrement& increment, const TMotionPrior& prior);
 	/** Whether this scan is matched by ICP: when due (or its line match
@@ -164,6 +170,7 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	matching::CLineScanMatcher m_lineMatcher;
 	matching::CIcpMatcher m_icp;
 	matching::CIcpMatcher m_icpWithoutPrior;  //!< m_icp without the degeneracy cap (prior not odometry)
+	matching::CIcpMatcher m_icpStandstill;  //!< m_icpWithoutPrior checking a claimed standstill (timed match)
 	matching::CKeyframePointMap m_keyframes;  //!< icp_matcher = mrpt
 	matching::CKeyframeStore m_store;  //!< icp_matcher = point_to_line: keyframes with normals...
 	matching::CLocalPointMap m_localMap;  //!< ...the local map of the window around the robot...
