@@ -10,26 +10,15 @@ namespace hslam::matching
 {
 namespace
 {
-/** Squared distance of q to the nearest reference segment (header comment):
- * from the nearest reference point to one of the next two nearest at most
- * maxSegment_m away from it; the nearest point's when there is none. */
+/** Squared distance from q to the nearest reference point, or with
+ * maxSegment_m > 0 to the nearest point of the reference's surface. */
 template <class Reference>
-double segmentDistance2(const Reference& reference, const Eigen::Vector2d& q, double maxSegment_m,
-						std::vector<size_t>& idx, std::vector<float>& d2)
+double distance2To(const Reference& reference, const Eigen::Vector2d& q, double maxSegment_m, std::vector<size_t>& idx,
+				   std::vector<float>& d2)
 {
-	reference.nearest(static_cast<float>(q.x()), static_cast<float>(q.y()), 3, idx, d2);
-	if (idx.empty()) return 1e30;
-	double best = d2[0];
-	const Eigen::Vector2d a = reference.point(idx[0]);
-	for (size_t j = 1; j < idx.size(); ++j)
-	{
-		const Eigen::Vector2d ab = reference.point(idx[j]) - a;
-		const double length2 = ab.squaredNorm();
-		if (length2 <= 0 || length2 > maxSegment_m * maxSegment_m) continue;
-		const double t = std::clamp((q - a).dot(ab) / length2, 0.0, 1.0);
-		best = std::min(best, (a + t * ab - q).squaredNorm());
-	}
-	return best;
+	if (maxSegment_m <= 0) return reference.nearestDistance2(static_cast<float>(q.x()), static_cast<float>(q.y()));
+	Eigen::Vector2d foot;
+	return detail::nearestSurfacePoint(reference, q, maxSegment_m, foot, idx, d2) ? (foot - q).squaredNorm() : 1e30;
 }
 
 template <class Reference>
@@ -47,10 +36,7 @@ double fitOf(const Reference& reference, const mrpt::maps::CSimplePointsMap& cur
 	for (size_t i = 0; i < xs.size(); ++i)
 	{
 		const double x = pose.x() + c * xs[i] - s * ys[i], y = pose.y() + s * xs[i] + c * ys[i];
-		const double distance2 = maxSegment_m > 0
-									 ? segmentDistance2(reference, Eigen::Vector2d(x, y), maxSegment_m, idx, d2)
-									 : reference.nearestDistance2(static_cast<float>(x), static_cast<float>(y));
-		sum += std::exp(-inv2s2 * distance2);
+		sum += std::exp(-inv2s2 * distance2To(reference, Eigen::Vector2d(x, y), maxSegment_m, idx, d2));
 	}
 	return sum / static_cast<double>(xs.size());
 }

@@ -52,4 +52,29 @@ struct TIndexReference
 	}
 	Eigen::Vector2d point(size_t i) const { return {index.x(i), index.y(i)}; }
 };
+/** The point of the reference surface nearest to q: on the segment from
+ * q's nearest reference point to one of the next two nearest, if they are at
+ * most maxSegment_m apart (neighbouring samples of one wall), else the
+ * nearest point itself. Unlike the nearest point it does not alias on
+ * sampled walls (alignment_fit.h). False without reference points; idx and
+ * d2 are scratch. */
+template <class Reference>
+bool nearestSurfacePoint(const Reference& reference, const Eigen::Vector2d& q, double maxSegment_m,
+						 Eigen::Vector2d& foot, std::vector<size_t>& idx, std::vector<float>& d2)
+{
+	reference.nearest(static_cast<float>(q.x()), static_cast<float>(q.y()), 3, idx, d2);
+	if (idx.empty()) return false;
+	const Eigen::Vector2d a = reference.point(idx[0]);
+	foot = a;
+	double best = (a - q).squaredNorm();
+	for (size_t j = 1; j < idx.size(); ++j)
+	{
+		const Eigen::Vector2d ab = reference.point(idx[j]) - a;
+		const double length2 = ab.squaredNorm();
+		if (length2 <= 0 || length2 > maxSegment_m * maxSegment_m) continue;
+		const Eigen::Vector2d f = a + std::clamp((q - a).dot(ab) / length2, 0.0, 1.0) * ab;
+		if ((f - q).squaredNorm() < best) best = (f - q).squaredNorm(), foot = f;
+	}
+	return true;
+}
 }  // namespace hslam::matching::detail
