@@ -63,6 +63,10 @@ TScores runDefault(const std::string& folder, const std::vector<std::string>& ov
 			calibration.distance_scale, calibration.correction.enabled};
 }
 
+/** Overrides that check a standstill claim like any other timed match. */
+const std::vector<std::string> kPointToPointStandstillCheck{"icp.standstill_point_to_line_steps=0",
+															"icp.standstill_fit_max_segment_m=0"};
+
 std::string shipped(const std::string& name) { return std::string(HSLAM_SOURCE_DIR) + "/rawlog_samples/" + name; }
 
 /** Simulates config_ini/sim-<name>.ini into dir (a few seconds). */
@@ -127,12 +131,10 @@ TEST(FrontEndScenarios, LaserOnlyStartedWhileDrivingIsTracked)
 	// Without competing basins the standstill check alone now holds this
 	// start too (thirteenth round, LaserOnlyStartedMidCorridor... below);
 	// without both it fails.
-	const std::vector<std::string> pointToPointCheck{"icp.standstill_point_to_line_steps=0",
-													 "icp.standstill_fit_max_segment_m=0"};
 	const TScores trackOff = runDefault(shipped("laser-only"), {"icp.competing_fit_ratio=0"}, 200);
 	print("laser only, from entry 200, no competing basins", trackOff);
 	EXPECT_LT(trackOff.ate_m, 0.2);  // measured 0.066 m
-	std::vector<std::string> neither = pointToPointCheck;
+	std::vector<std::string> neither = kPointToPointStandstillCheck;
 	neither.push_back("icp.competing_fit_ratio=0");
 	const TScores neitherTrack = runDefault(shipped("laser-only"), neither, 200);
 	print("laser only, from entry 200, no competing basins, point-to-point standstill check", neitherTrack);
@@ -160,8 +162,7 @@ TEST(FrontEndScenarios, LaserOnlyStartedMidCorridorIsNotHeldAtTheFirstScan)
 		print("laser only, from entry " + std::to_string(entry), s);
 		EXPECT_LT(s.ate_m, 0.2);  // measured 0.070 m (110), 0.114 m (2200)
 	}
-	const TScores old = runDefault(
-		shipped("laser-only"), {"icp.standstill_point_to_line_steps=0", "icp.standstill_fit_max_segment_m=0"}, 110);
+	const TScores old = runDefault(shipped("laser-only"), kPointToPointStandstillCheck, 110);
 	print("laser only, from entry 110, point-to-point standstill check", old);
 	EXPECT_GT(old.ate_m, 1.0);
 }

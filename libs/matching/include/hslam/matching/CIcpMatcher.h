@@ -75,7 +75,8 @@ class CIcpMatcher
 		 * this long (alignment_fit.h); 0 = to the nearest point. */
 		double seed_fit_max_segment_m = 0.0;
 		/** A match checking odometry's claim that the robot stood still (a
-		 * timed match, CScanMatchingPoseEstimator) uses these instead of
+		 * timed match after no travel, CScanMatchingPoseEstimator::
+		 * icpForThisMatch) uses these instead of
 		 * point_to_line_steps and seed_fit_max_segment_m: its reference
 		 * scan was, if the claim is true, taken from the same pose, and
 		 * point-to-point measures then favour zero motion (alignment_fit.h). */

@@ -124,7 +124,8 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	bool dueForMatch(double t_s) const;
 	bool dueForIcp() const;
 	/** The ICP matcher for the match now due: without the degeneracy cap after a
-	 * gap, the standstill check for a timed match, m_icp otherwise. */
+	 * gap or for a timed match, the standstill check for a timed match after no
+	 * travel at all (standstill_max_*), m_icp otherwise. */
 	const matching::CIcpMatcher& icpForThisMatch() const;
 	matching::TLineScanFrame makeFrame(const common::TRangeData& scan);
 	void predict(const TOdometryIncrement& increment, const TMotionPrior& prior);
@@ -170,7 +171,7 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	matching::CLineScanMatcher m_lineMatcher;
 	matching::CIcpMatcher m_icp;
 	matching::CIcpMatcher m_icpWithoutPrior;  //!< m_icp without the degeneracy cap (prior not odometry)
-	matching::CIcpMatcher m_icpStandstill;  //!< m_icpWithoutPrior checking a claimed standstill (timed match)
+	matching::CIcpMatcher m_icpStandstill;  //!< m_icpWithoutPrior checking a claimed standstill (icpForThisMatch)
 	matching::CKeyframePointMap m_keyframes;  //!< icp_matcher = mrpt
 	matching::CKeyframeStore m_store;  //!< icp_matcher = point_to_line: keyframes with normals...
 	matching::CLocalPointMap m_localMap;  //!< ...the local map of the window around the robot...
