@@ -141,6 +141,46 @@ TEST(IcpMatcher, AResultPairingMostPointsButFittingBadlyIsRestarted)
 	EXPECT_GT(restarted.fit, 0.7);
 }
 
+namespace
+{
+/** ICP of the room's scan from `seed_deg` with a `step_deg` heading std,
+ * restarted on fit below 0.9, with or without the one-basin skip. */
+TPoseMatch roomMatch(double seed_deg, double step_deg, double sameBasin_m)
+{
+	const TRoomView view;
+	const CPose2D seed(0.3, -0.2, seed_deg * kDeg);
+	const Eigen::Matrix3d cov = Eigen::Vector3d(0.01, 0.01, std::pow(step_deg * kDeg, 2)).asDiagonal();
+	CIcpMatcher::TOptions o;
+	o.engine = "cached";
+	o.restart_below_fit = 0.9;
+	o.restart_max_step_rad = 90 * kDeg;
+	o.restart_same_basin_m = sameBasin_m;
+	return CIcpMatcher(o).match(view.index, toPointsMap(view.scan), seed, cov);
+}
+}  // namespace
+
+TEST(IcpMatcher, FarSeedsAreSkippedOnlyWhenTheNearSeedsAgree)
+{
+	// The room of the test above. From 160 deg with a 5 deg step the first
+	// result is the half-turn alias (177.7 deg, fit 0.60 < 0.9: restarted);
+	// the +-1 seeds (155, 165 deg) end there too, so the +-2 seeds are not
+	// run: 3 alignments instead of 5, and (as the +-2 seeds end there as
+	// well) the same result.
+	const auto all = roomMatch(160, 5, 0), lazy = roomMatch(160, 5, 0.02);
+	EXPECT_EQ(all.seeds_aligned, 5u);
+	EXPECT_EQ(lazy.seeds_aligned, 3u);
+	EXPECT_NEAR(std::abs(lazy.pose.phi()), 177.7 * kDeg, 1 * kDeg);
+	EXPECT_NEAR(lazy.pose.x(), all.pose.x(), 1e-9);
+	EXPECT_NEAR(lazy.pose.phi(), all.pose.phi(), 1e-9);
+	// From 120 deg with a 60 deg step the -1 seed (60 deg) reaches the true
+	// basin and the +1 seed (180 deg) the alias: the near seeds disagree, all
+	// four run, and the true pose (every point paired) wins either way.
+	const auto wide = roomMatch(120, 60, 0.02);
+	EXPECT_EQ(wide.seeds_aligned, 5u);
+	EXPECT_NEAR(wide.pose.phi(), 0.0, 0.5 * kDeg);
+	EXPECT_NEAR(wide.score, 1.0, 1e-9);
+}
+
 TEST(IcpMatcher, PointToLineStepsLeaveThePointToPointFixedPoint)
 {
 	// The same room and scan; seed 10 deg off. Point-to-point ICP stops 2.3

@@ -67,6 +67,11 @@ class CIcpMatcher
 		int point_to_line_steps = 0;
 		double restart_min_step_rad = 3.0 * M_PI / 180.0;
 		double restart_max_step_rad = 15.0 * M_PI / 180.0;
+		/** The +-2-step seeds are skipped when the first result and both
+		 * +-1-step results lie within this distance and angle of each other
+		 * (one basin); 0 m = always all four seeds. */
+		double restart_same_basin_m = 0.02;
+		double restart_same_basin_rad = 0.5 * M_PI / 180.0;
 		/** Sigma (m) of the fit that chooses between the results of several
 		 * seeds (alignment_fit.h); 0 = by goodness, a later seed winning only
 		 * by more than restart_goodness_tolerance. */
@@ -115,6 +120,8 @@ class CIcpMatcher
 			v.real("restart_goodness_tolerance", restart_goodness_tolerance, 0.0, 1.0);
 			v.degrees("restart_min_step_deg", restart_min_step_rad, 0.1, 90.0);
 			v.degrees("restart_max_step_deg", restart_max_step_rad, 0.1, 90.0);
+			v.real("restart_same_basin_m", restart_same_basin_m, 0.0, 1.0);
+			v.degrees("restart_same_basin_deg", restart_same_basin_rad, 0.0, 45.0);
 			v.real("seed_fit_sigma_m", seed_fit_sigma_m, 0.0, 1.0);
 			v.real("seed_fit_max_segment_m", seed_fit_max_segment_m, 0.0, 10.0);
 			v.integer("standstill_point_to_line_steps", standstill_point_to_line_steps, 0, 50);

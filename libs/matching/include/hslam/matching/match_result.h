@@ -36,6 +36,8 @@ struct TPoseMatch
 	/** Set when `covariance` was widened over competing basins
 	 * (competing_basins.h): the covariance of the chosen basin alone. */
 	std::optional<Eigen::Matrix3d> basin_covariance;
+	/** ICP: alignments run for this result (the first seed and its restarts). */
+	size_t seeds_aligned = 0;
 	std::string method;  //!< what produced it, e.g. "lines", "lines:points", "icp"
 };
 
