@@ -84,16 +84,15 @@ TPoseMatch CIcpMatcher::bestOfRestarts(AlignAt alignAt, const mrpt::poses::CPose
 	// restart_goodness_tolerance), keep the one closest to the prior
 	// (Mahalanobis): a wrong basin can pair marginally more points.
 	std::vector<TPoseMatch> candidates{best};
-	for (const double k : {1.0, -1.0, 2.0, -2.0})
-	{
-		// The +-1 seeds landing where the first result did (most restarts:
-		// aces, 178 of 202 changed the result by < 2 cm / 0.5 deg) say the
-		// basin is wide; the +-2 seeds would land there too.
-		if (k == 2.0 && m_options.restart_same_basin_m > 0 &&
-			allInOneBasin(candidates, m_options.restart_same_basin_m, m_options.restart_same_basin_rad))
-			break;
-		candidates.push_back(alignAt(initialGuess + mrpt::poses::CPose2D(0, 0, k * step)));
-	}
+	const auto alignTurned = [&](double steps)
+	{ candidates.push_back(alignAt(initialGuess + mrpt::poses::CPose2D(0, 0, steps * step))); };
+	alignTurned(1), alignTurned(-1);
+	// The +-1 seeds landing where the first result did (most restarts: aces,
+	// 178 of 202 changed the result by < 2 cm / 0.5 deg) say the basin is
+	// wide; the +-2 seeds would land there too.
+	const bool oneBasin = m_options.restart_same_basin_m > 0 &&
+		allInOneBasin(candidates, m_options.restart_same_basin_m, m_options.restart_same_basin_rad);
+	if (!oneBasin) alignTurned(2), alignTurned(-2);
 	double bestScore = 0;
 	for (const auto& c : candidates) bestScore = std::max(bestScore, c.score);
 	const Eigen::Matrix3d priorInfo = (initialCov + Eigen::Matrix3d::Identity() * 1e-9).inverse();
