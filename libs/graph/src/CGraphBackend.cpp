@@ -121,7 +121,7 @@ void CGraphBackend::addLoopEdge(TLoopClosure& c)
 	c.reason = "accepted";
 	TGraphEdge e;
 	e.from = c.anchor_node, e.to = c.query_node, e.relative = c.relative, e.kind = EEdgeKind::loop;
-	e.information = c.covariance.inverse();
+	e.information = (m_options.loop_edge_covariance_factor * c.covariance).inverse();
 	c.edge = static_cast<long>(m_graph.addEdge(e));
 	++m_timing.closures_accepted;
 }

@@ -145,6 +145,7 @@ std::vector<TLoopClosure> CLoopClosureDetector::detect(size_t node, const CPoseG
 {
 	std::vector<TLoopClosure> out;
 	if (node != m_queryNode || node % static_cast<size_t>(m_options.detect_every_n_keyframes) != 0) return out;
+	int accepted = 0;
 	for (const auto& c : candidates(node, graph, relativeCovariance))
 	{
 		// Seen from a keyframe 0.5 m away, a submap that matched nowhere in
@@ -159,6 +160,8 @@ std::vector<TLoopClosure> CLoopClosureDetector::detect(size_t node, const CPoseG
 		}
 		out.push_back(verify(c, node, graph));
 		if (out.back().reason == "low score") m_lowScoreAt[c.submap] = node;
+		accepted += out.back().accepted ? 1 : 0;
+		if (m_options.max_closures_per_keyframe > 0 && accepted >= m_options.max_closures_per_keyframe) break;
 	}
 	return out;
 }

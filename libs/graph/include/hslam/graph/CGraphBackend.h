@@ -31,6 +31,10 @@ struct TGraphBackendOptions
 	double min_sequential_yaw_std_rad = mrpt::DEG2RAD(0.25);  //!< floor of its rotation sigma
 	double weak_xy_std_m = 1.0;  //!< added to an edge across an odometry gap
 	double weak_yaw_std_rad = mrpt::DEG2RAD(30.0);
+	/** A loop edge's covariance is the closure's score-surface covariance
+	 * times this: that covariance counts every query point as independent,
+	 * neighbouring beams are not (as [icp] covariance_correlation_factor). */
+	double loop_edge_covariance_factor = 10.0;
 	bool detect_loops = true;  //!< false: the graph only records the front-end's chain
 
 	template <class V>
@@ -41,6 +45,7 @@ struct TGraphBackendOptions
 		v.degrees("min_sequential_yaw_std_deg", min_sequential_yaw_std_rad, 1e-3, 90.0);
 		v.real("weak_xy_std_m", weak_xy_std_m, 0.0, 1000.0);
 		v.degrees("weak_yaw_std_deg", weak_yaw_std_rad, 0.0, 180.0);
+		v.real("loop_edge_covariance_factor", loop_edge_covariance_factor, 0.01, 1000.0);
 		v.flag("detect_loops", detect_loops);
 	}
 };

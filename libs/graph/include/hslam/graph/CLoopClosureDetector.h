@@ -66,6 +66,10 @@ struct TLoopClosureOptions
 	 * from the next this-many-minus-one keyframes (its slot among
 	 * max_candidates stays spent); 1 = every time. */
 	int retest_low_score_after_keyframes = 1;
+	/** A search stops once this many of its candidates were accepted (the
+	 * rest, farther away, add little once the keyframe is tied to the old
+	 * map); 0 = every candidate is matched. */
+	int max_closures_per_keyframe = 0;
 	double overlap_distance_m = 6.0;  //!< anchor within this (plus the window) of the current pose
 	double window_sigmas = 3.0;  //!< window = this x the relative standard deviation
 	double min_window_xy_m = 0.5, max_window_xy_m = 4.0;
@@ -101,6 +105,7 @@ struct TLoopClosureOptions
 		v.integer("detect_every_n_keyframes", detect_every_n_keyframes, 1, 1000);
 		v.integer("max_candidates", max_candidates, 1, 100);
 		v.integer("retest_low_score_after_keyframes", retest_low_score_after_keyframes, 1, 1000);
+		v.integer("max_closures_per_keyframe", max_closures_per_keyframe, 0, 100);
 		v.real("overlap_distance_m", overlap_distance_m, 0.0, 100.0);
 		v.real("window_sigmas", window_sigmas, 0.0, 100.0);
 		v.real("min_window_xy_m", min_window_xy_m, 0.0, 100.0);
