@@ -89,6 +89,32 @@ TEST(LoopClosure, DriftedLoopIsClosedAndAteDrops)
 	EXPECT_LT(after, 0.3);
 }
 
+TEST(LoopClosure, LoopEdgeCovarianceIsTheClosuresTimesTheFactor)
+{
+	// [graph] loop_edge_covariance_factor: every accepted closure's edge
+	// carries the inverse of factor x its score-surface covariance (the
+	// default 10, and 1 = as measured).
+	const auto world = loopCorridor();
+	const auto truth = keyframePath(loopWaypoints());
+	for (const double factor : {10.0, 1.0})
+	{
+		TGraphBackendOptions go;
+		go.loop_edge_covariance_factor = factor;
+		CGraphBackend backend(go, {});
+		runBackend(world, truth, TFrontEndErrors{}, backend);
+		size_t checked = 0;
+		for (const auto& c : backend.closures())
+		{
+			if (!c.accepted || c.edge < 0) continue;
+			const Eigen::Matrix3d product = backend.graph().edges()[static_cast<size_t>(c.edge)].information * c.covariance;
+			EXPECT_TRUE(product.isApprox(Eigen::Matrix3d::Identity() / factor, 1e-6)) << "factor " << factor;
+			++checked;
+		}
+		EXPECT_GE(checked, 5u) << "factor " << factor;
+	}
+	EXPECT_DOUBLE_EQ(TGraphBackendOptions{}.loop_edge_covariance_factor, 10.0);
+}
+
 TEST(LoopClosure, SearchStopsAtTheFirstAcceptedClosureOfAKeyframe)
 {
 	// The same drifted loop matched with every candidate of a keyframe and
