@@ -69,6 +69,30 @@ TEST(IcpCovarianceByHand, TwoPerpendicularWallsGiveTheInverseInformation)
 	EXPECT_NEAR(cov(1, 2), 0.0, 1e-12);
 }
 
+TEST(IcpCovarianceByHand, DenselySampledWallCountsPerSpacingNotPerBeam)
+{
+	// The current scan sees wall A every 0.025 m (81 points), wall B every
+	// 0.1 m. Counting every point, wall A's 81 points give H_yy = 81. With
+	// covariance_min_point_spacing_m = 0.09 only every fourth point of wall A
+	// is counted (x = -1, -0.9, ...; 0.075 m is closer than 0.09): the
+	// information of the two-wall case above, H = diag(21, 21, 15.4).
+	std::vector<TPoint2D> denseA;
+	for (int i = -40; i <= 40; ++i) denseA.push_back({0.025 * i, 2.0});
+	const auto reference = toPointsMap(both(wallA(), wallB()));
+	const auto current = toPointsMap(both(denseA, wallB()));
+	TGeometricCovarianceOptions o;
+	size_t matched = 0;
+	const Eigen::Matrix3d everyBeam = geometricAlignmentCovariance(reference, current, CPose2D(), o, &matched);
+	EXPECT_EQ(matched, 102u);
+	expectRelative(everyBeam(1, 1), kSigma2 / 81);
+	o.min_point_spacing_m = 0.09;
+	const Eigen::Matrix3d perSpacing = geometricAlignmentCovariance(reference, current, CPose2D(), o, &matched);
+	EXPECT_EQ(matched, 42u);
+	expectRelative(perSpacing(0, 0), kSigma2 / 21);
+	expectRelative(perSpacing(1, 1), kSigma2 / 21);
+	expectRelative(perSpacing(2, 2), kSigma2 / 15.4);
+}
+
 TEST(IcpCovarianceByHand, LeverArmCouplesTranslationAndRotation)
 {
 	// The current scan taken 0.5 m further along x: the pose (0.5, 0, 0) puts

@@ -57,9 +57,17 @@ TNormalEquations normalEquations(const Reference& reference, size_t count, Point
 	TNormalEquations e;
 	std::vector<size_t> idx;
 	std::vector<float> dist2;
+	const double spacing2 = o.min_point_spacing_m * o.min_point_spacing_m;
+	mrpt::math::TPoint2D lastCounted(1e30, 1e30);
 	for (size_t k = 0; k < count; ++k)
 	{
-		const auto w = pose + pointAt(k);
+		const mrpt::math::TPoint2D p = pointAt(k);
+		if (spacing2 > 0)
+		{
+			if (std::pow(p.x - lastCounted.x, 2) + std::pow(p.y - lastCounted.y, 2) < spacing2) continue;
+			lastCounted = p;
+		}
+		const auto w = pose + p;
 		reference.nearest(static_cast<float>(w.x), static_cast<float>(w.y), static_cast<size_t>(o.normal_neighbours),
 						  idx, dist2);
 		if (idx.empty() || dist2[0] > o.max_match_distance_m * o.max_match_distance_m) continue;
