@@ -72,10 +72,11 @@ TEST(IcpCovarianceByHand, TwoPerpendicularWallsGiveTheInverseInformation)
 TEST(IcpCovarianceByHand, DenselySampledWallCountsPerSpacingNotPerBeam)
 {
 	// The current scan sees wall A every 0.025 m (81 points), wall B every
-	// 0.1 m. Counting every point, wall A's 81 points give H_yy = 81. With
-	// covariance_min_point_spacing_m = 0.09 only every fourth point of wall A
-	// is counted (x = -1, -0.9, ...; 0.075 m is closer than 0.09): the
-	// information of the two-wall case above, H = diag(21, 21, 15.4).
+	// 0.1 m. Counting every point fully, wall A gives H_yy = 81. With
+	// covariance_full_weight_spacing_m = 0.1 each point of wall A counts
+	// 0.025 / 0.1 = 0.25: H_yy = 20.25, H_thetatheta = 0.25 * 0.025^2 *
+	// sum_{i=-40..40} i^2 (= 44 280) + 7.7 (wall B) = 14.61875; wall B's points
+	// (0.1 m apart, the first 3.6 m from wall A's last) count fully: H_xx = 21.
 	std::vector<TPoint2D> denseA;
 	for (int i = -40; i <= 40; ++i) denseA.push_back({0.025 * i, 2.0});
 	const auto reference = toPointsMap(both(wallA(), wallB()));
@@ -85,12 +86,12 @@ TEST(IcpCovarianceByHand, DenselySampledWallCountsPerSpacingNotPerBeam)
 	const Eigen::Matrix3d everyBeam = geometricAlignmentCovariance(reference, current, CPose2D(), o, &matched);
 	EXPECT_EQ(matched, 102u);
 	expectRelative(everyBeam(1, 1), kSigma2 / 81);
-	o.min_point_spacing_m = 0.09;
+	o.full_weight_spacing_m = 0.1;
 	const Eigen::Matrix3d perSpacing = geometricAlignmentCovariance(reference, current, CPose2D(), o, &matched);
-	EXPECT_EQ(matched, 42u);
+	EXPECT_EQ(matched, 102u);
 	expectRelative(perSpacing(0, 0), kSigma2 / 21);
-	expectRelative(perSpacing(1, 1), kSigma2 / 21);
-	expectRelative(perSpacing(2, 2), kSigma2 / 15.4);
+	expectRelative(perSpacing(1, 1), kSigma2 / 20.25);
+	expectRelative(perSpacing(2, 2), kSigma2 / 14.61875);
 }
 
 TEST(IcpCovarianceByHand, LeverArmCouplesTranslationAndRotation)

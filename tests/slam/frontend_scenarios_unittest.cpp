@@ -211,14 +211,19 @@ TEST(FrontEndScenarios, LongRangeLaserDownACorridorIsNotPinnedByGrazingPoints)
 								  "--set laser.preset=custom --set laser.fov_deg=180 --set laser.resolution_deg=0.5 "
 								  "--set laser.max_range_m=20");
 	const TScores byDefault = runDefault(folder);
-	const TScores mrptRule = runDefault(folder, {"icp.stage_step_fraction=0"});
-	const TScores grazingOut = runDefault(folder, {"icp.stage_step_fraction=0", "icp.max_incidence_deg=85"});
+	// (the covariance counting information per length of wall, [icp]
+	// covariance_full_weight_spacing_m, also keeps the creep out: 0.215 m;
+	// the counterfactuals count every beam)
+	const TScores mrptRule =
+		runDefault(folder, {"icp.stage_step_fraction=0", "icp.covariance_full_weight_spacing_m=0"});
+	const TScores grazingOut = runDefault(
+		folder, {"icp.stage_step_fraction=0", "icp.max_incidence_deg=85", "icp.covariance_full_weight_spacing_m=0"});
 	print("corridor at 20 m, default", byDefault);
 	print("corridor at 20 m, every stage to 1e-6", mrptRule);
 	print("corridor at 20 m, every stage to 1e-6, grazing points not aligned", grazingOut);
-	EXPECT_LT(byDefault.ate_m, 0.1);  // measured 0.018 m (odometry 0.83 m)
-	EXPECT_GT(mrptRule.ate_m, 0.4);  // measured 0.742 m: this test can fail
-	EXPECT_LT(grazingOut.ate_m, 0.15);  // measured 0.043 m
+	EXPECT_LT(byDefault.ate_m, 0.1);  // measured 0.021 m (odometry 0.83 m)
+	EXPECT_GT(mrptRule.ate_m, 0.4);  // measured 0.715 m: this test can fail
+	EXPECT_LT(grazingOut.ate_m, 0.15);  // measured 0.040 m
 	EXPECT_LT(byDefault.ate_m, 0.25 * byDefault.odometry_ate_m);
 }
 

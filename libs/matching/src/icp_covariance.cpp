@@ -48,7 +48,19 @@ struct TNormalEquations
 	Eigen::Vector3d g = Eigen::Vector3d::Zero();
 	double residual2 = 0;
 	size_t matched = 0;
+	double weight = 0;  //!< matched points, each counted by its spacing weight
 };
+
+/** How much of an independent measurement current point k is: its distance
+ * to the previous point in scan order (the next, for the first) over
+ * spacing_m, at most 1; 1 for every point when spacing_m is 0. */
+template <class PointAt>
+double spacingWeight(size_t k, size_t count, PointAt pointAt, double spacing_m)
+{
+	if (spacing_m <= 0 || count < 2) return 1.0;
+	const mrpt::math::TPoint2D p = pointAt(k), q = pointAt(k > 0 ? k - 1 : 1);
+	return std::min(1.0, std::hypot(p.x - q.x, p.y - q.y) / spacing_m);
+}
 
 template <class Reference, class PointAt>
 TNormalEquations normalEquations(const Reference& reference, size_t count, PointAt pointAt,
@@ -57,17 +69,9 @@ TNormalEquations normalEquations(const Reference& reference, size_t count, Point
 	TNormalEquations e;
 	std::vector<size_t> idx;
 	std::vector<float> dist2;
-	const double spacing2 = o.min_point_spacing_m * o.min_point_spacing_m;
-	mrpt::math::TPoint2D lastCounted(1e30, 1e30);
 	for (size_t k = 0; k < count; ++k)
 	{
-		const mrpt::math::TPoint2D p = pointAt(k);
-		if (spacing2 > 0)
-		{
-			if (std::pow(p.x - lastCounted.x, 2) + std::pow(p.y - lastCounted.y, 2) < spacing2) continue;
-			lastCounted = p;
-		}
-		const auto w = pose + p;
+		const auto w = pose + pointAt(k);
 		reference.nearest(static_cast<float>(w.x), static_cast<float>(w.y), static_cast<size_t>(o.normal_neighbours),
 						  idx, dist2);
 		if (idx.empty() || dist2[0] > o.max_match_distance_m * o.max_match_distance_m) continue;
@@ -77,9 +81,11 @@ TNormalEquations normalEquations(const Reference& reference, size_t count, Point
 		const Eigen::Vector2d arm(w.x - pose.x(), w.y - pose.y());  // R p
 		const Eigen::Vector3d J(n.x(), n.y(), n.x() * -arm.y() + n.y() * arm.x());
 		const double r = n.dot(Eigen::Vector2d(w.x, w.y) - q);
-		e.H += J * J.transpose();
-		e.g += J * r;
-		e.residual2 += r * r;
+		const double weight = spacingWeight(k, count, pointAt, o.full_weight_spacing_m);
+		e.H += weight * J * J.transpose();
+		e.g += weight * J * r;
+		e.residual2 += weight * r * r;
+		e.weight += weight;
 		++e.matched;
 	}
 	return e;
@@ -98,7 +104,7 @@ Eigen::Matrix3d alignmentCovariance(const Reference& reference, size_t count, Po
 	if (matchedPoints) *matchedPoints = matched;
 	const double cap2 = o.max_std_m * o.max_std_m;
 	if (matched < 10) return Eigen::Matrix3d::Identity() * cap2;
-	const double sigma2 = std::max(residual2 / matched, o.min_sigma_m * o.min_sigma_m) * o.correlation_factor;
+	const double sigma2 = std::max(residual2 / e.weight, o.min_sigma_m * o.min_sigma_m) * o.correlation_factor;
 	// Invert through the eigen-decomposition, capping the variance of
 	// unconstrained directions instead of dividing by ~0.
 	Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(H);
@@ -110,7 +116,7 @@ Eigen::Matrix3d alignmentCovariance(const Reference& reference, size_t count, Po
 	// block: each point counts along its normal) is unconstrained. Rotation
 	// is left as it is: heading is what matching must keep correcting.
 	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> tr(H.topLeftCorner<2, 2>());
-	const double minEigen = o.degenerate_min_fraction * static_cast<double>(matched);
+	const double minEigen = o.degenerate_min_fraction * e.weight;
 	for (int i = 0; i < 2; ++i)
 		if (tr.eigenvalues()[i] < minEigen)
 			cov.topLeftCorner<2, 2>() += cap2 * tr.eigenvectors().col(i) * tr.eigenvectors().col(i).transpose();

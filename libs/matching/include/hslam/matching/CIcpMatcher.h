@@ -133,7 +133,7 @@ class CIcpMatcher
 			v.real("covariance_max_match_distance_m", geometric.max_match_distance_m, 0.01, 5.0);
 			v.real("covariance_min_sigma_m", geometric.min_sigma_m, 1e-4, 1.0);
 			v.real("covariance_correlation_factor", geometric.correlation_factor, 1.0, 1000.0);
-			v.real("covariance_min_point_spacing_m", geometric.min_point_spacing_m, 0.0, 1.0);
+			v.real("covariance_full_weight_spacing_m", geometric.full_weight_spacing_m, 0.0, 1.0);
 			v.real("covariance_degenerate_min_fraction", geometric.degenerate_min_fraction, 0.0, 1.0);
 			v.real("min_xy_std_m", min_xy_std_m, 1e-4, 1.0);
 			v.degrees("min_theta_std_deg", min_theta_std_rad, 0.001, 10.0);

@@ -29,11 +29,12 @@ struct TGeometricCovarianceOptions
 	double max_match_distance_m = 0.2;  //!< points further from the reference surface are outliers
 	double min_sigma_m = 0.02;  //!< floor of the residual std (laser noise)
 	double correlation_factor = 10.0;  //!< points per independent error (neighbouring beams are correlated)
-	/** A current point closer than this to the previous one counted (scan
-	 * order) is not counted: information per length of wall, not per beam.
-	 * A near wall is sampled every few millimetres and those beams' errors
-	 * are one error; a far wall every few centimetres. 0 = every point. */
-	double min_point_spacing_m = 0.0;
+	/** A current point counts min(1, d / this) of a point, d its distance to
+	 * the previous point in scan order: information per length of wall, not
+	 * per beam. A near wall is sampled every few millimetres and those beams'
+	 * errors are one error; a far wall every few centimetres. 0 = every
+	 * point counts fully. */
+	double full_weight_spacing_m = 0.0;
 	double max_std_m = 100.0;  //!< cap of the std in an unconstrained direction
 	/** A translation direction along which fewer than this fraction of the
 	 * matched points constrain the pose (eigenvalue of the unit-weight
