@@ -94,6 +94,19 @@ TEST(IcpCovarianceByHand, DenselySampledWallCountsPerSpacingNotPerBeam)
 	expectRelative(perSpacing(2, 2), kSigma2 / 14.61875);
 }
 
+TEST(IcpCovarianceByHand, PointsAllOnTopOfEachOtherGiveTheCapNotNaN)
+{
+	// Twelve returns of one spot: every spacing weight is 0, nothing is known.
+	const auto reference = toPointsMap(both(wallA(), wallB()));
+	const auto current = toPointsMap(std::vector<TPoint2D>(12, TPoint2D{0.0, 2.0}));
+	TGeometricCovarianceOptions o;
+	o.full_weight_spacing_m = 0.05;
+	size_t matched = 0;
+	const Eigen::Matrix3d cov = geometricAlignmentCovariance(reference, current, CPose2D(), o, &matched);
+	EXPECT_EQ(matched, 12u);
+	EXPECT_TRUE(cov.isApprox(Eigen::Matrix3d::Identity() * kCap2));
+}
+
 TEST(IcpCovarianceByHand, LeverArmCouplesTranslationAndRotation)
 {
 	// The current scan taken 0.5 m further along x: the pose (0.5, 0, 0) puts

@@ -103,7 +103,8 @@ Eigen::Matrix3d alignmentCovariance(const Reference& reference, size_t count, Po
 	const size_t matched = e.matched;
 	if (matchedPoints) *matchedPoints = matched;
 	const double cap2 = o.max_std_m * o.max_std_m;
-	if (matched < 10) return Eigen::Matrix3d::Identity() * cap2;
+	// (a weight of 0: every matched point on top of its predecessor)
+	if (matched < 10 || !(e.weight > 0)) return Eigen::Matrix3d::Identity() * cap2;
 	const double sigma2 = std::max(residual2 / e.weight, o.min_sigma_m * o.min_sigma_m) * o.correlation_factor;
 	// Invert through the eigen-decomposition, capping the variance of
 	// unconstrained directions instead of dividing by ~0.
