@@ -51,14 +51,14 @@ struct TNormalEquations
 	double weight = 0;  //!< matched points, each counted by its spacing weight
 };
 
-/** How much of an independent measurement current point k is: its distance
- * to the previous point in scan order (the next, for the first) over
- * spacing_m, at most 1; 1 for every point when spacing_m is 0. */
+/** How much of an independent measurement current point p = pointAt(k)
+ * is: its distance to the previous point in scan order (the next, for the
+ * first) over spacing_m, at most 1; 1 for every point when spacing_m is 0. */
 template <class PointAt>
-double spacingWeight(size_t k, size_t count, PointAt pointAt, double spacing_m)
+double spacingWeight(const mrpt::math::TPoint2D& p, size_t k, size_t count, PointAt pointAt, double spacing_m)
 {
 	if (spacing_m <= 0 || count < 2) return 1.0;
-	const mrpt::math::TPoint2D p = pointAt(k), q = pointAt(k > 0 ? k - 1 : 1);
+	const mrpt::math::TPoint2D q = pointAt(k > 0 ? k - 1 : 1);
 	return std::min(1.0, std::hypot(p.x - q.x, p.y - q.y) / spacing_m);
 }
 
@@ -71,7 +71,8 @@ TNormalEquations normalEquations(const Reference& reference, size_t count, Point
 	std::vector<float> dist2;
 	for (size_t k = 0; k < count; ++k)
 	{
-		const auto w = pose + pointAt(k);
+		const mrpt::math::TPoint2D p = pointAt(k);
+		const auto w = pose + p;
 		reference.nearest(static_cast<float>(w.x), static_cast<float>(w.y), static_cast<size_t>(o.normal_neighbours),
 						  idx, dist2);
 		if (idx.empty() || dist2[0] > o.max_match_distance_m * o.max_match_distance_m) continue;
@@ -81,7 +82,7 @@ TNormalEquations normalEquations(const Reference& reference, size_t count, Point
 		const Eigen::Vector2d arm(w.x - pose.x(), w.y - pose.y());  // R p
 		const Eigen::Vector3d J(n.x(), n.y(), n.x() * -arm.y() + n.y() * arm.x());
 		const double r = n.dot(Eigen::Vector2d(w.x, w.y) - q);
-		const double weight = spacingWeight(k, count, pointAt, o.full_weight_spacing_m);
+		const double weight = spacingWeight(p, k, count, pointAt, o.full_weight_spacing_m);
 		e.H += weight * J * J.transpose();
 		e.g += weight * J * r;
 		e.residual2 += weight * r * r;
