@@ -2,6 +2,7 @@
 
 #include <sys/resource.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -16,16 +17,23 @@ std::string shellQuote(const std::string& s)
 
 double childCpuSeconds(const std::string& command, const std::string& logFile)
 {
+	return runTimedChild(command, logFile).cpu_s;
+}
+
+TChildTimes runTimedChild(const std::string& command, const std::string& logFile)
+{
 	const auto cpu = [] {
 		rusage u{};
 		getrusage(RUSAGE_CHILDREN, &u);
 		return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
 	};
 	const double before = cpu();
+	const auto start = std::chrono::steady_clock::now();
 	const int status = std::system((command + " </dev/null >" + shellQuote(logFile) + " 2>&1").c_str());
 	if (status != 0) throw std::runtime_error("command failed (status " + std::to_string(status) + "): " + command +
 											  " (see " + logFile + ")");
-	return cpu() - before;
+	const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+	return {cpu() - before, wall_s};
 }
 
 }  // namespace hslam::bench

@@ -115,6 +115,40 @@ TEST(LoopClosure, LoopEdgeCovarianceIsTheClosuresTimesTheFactor)
 	EXPECT_DOUBLE_EQ(TGraphBackendOptions{}.loop_edge_covariance_factor, 10.0);
 }
 
+TEST(LoopClosure, CandidatesVerifiedSideBySideGiveTheSameClosures)
+{
+	// [loop_closure] search_threads: a keyframe's candidates are verified
+	// on several threads; they are independent, so one thread and four give
+	// the same closures (same order, same figures) and the same graph.
+	const auto world = loopCorridor();
+	const auto truth = keyframePath(loopWaypoints());
+	std::vector<TLoopClosure> byThreads[2];
+	std::vector<TGraphNode> nodes[2];
+	const int threads[2] = {1, 4};
+	for (int k = 0; k < 2; ++k)
+	{
+		TLoopClosureOptions lo;
+		lo.search_threads = threads[k];
+		CGraphBackend backend({}, lo);
+		runBackend(world, truth, TFrontEndErrors{}, backend);
+		byThreads[k] = backend.closures();
+		nodes[k] = backend.graph().nodes();
+	}
+	ASSERT_GE(byThreads[0].size(), 20u);
+	ASSERT_EQ(byThreads[0].size(), byThreads[1].size());
+	for (size_t i = 0; i < byThreads[0].size(); ++i)
+	{
+		const auto &a = byThreads[0][i], &b = byThreads[1][i];
+		EXPECT_EQ(a.reason, b.reason) << i;
+		EXPECT_EQ(a.submap, b.submap) << i;
+		EXPECT_EQ(a.score, b.score) << i;
+		EXPECT_TRUE(a.relative.x == b.relative.x && a.relative.y == b.relative.y && a.relative.phi == b.relative.phi);
+	}
+	ASSERT_EQ(nodes[0].size(), nodes[1].size());
+	for (size_t n = 0; n < nodes[0].size(); ++n)
+		EXPECT_TRUE(nodes[0][n].pose.x == nodes[1][n].pose.x && nodes[0][n].pose.phi == nodes[1][n].pose.phi) << n;
+}
+
 TEST(LoopClosure, SearchStopsAtTheFirstAcceptedClosureOfAKeyframe)
 {
 	// The same drifted loop matched with every candidate of a keyframe and

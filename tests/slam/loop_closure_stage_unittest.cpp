@@ -141,6 +141,32 @@ TEST(LoopClosureStage, KeepsAGoodFrontEndAndItsClosuresAreTrue)
 	EXPECT_GT(checkAcceptedClosures("lab", *pipeline, 0.06, 2.0), 20u);
 }
 
+TEST(LoopClosureStage, BackgroundThreadGivesTheSameGraphAsTheDirectCall)
+{
+	// The front-end never reads the graph online, so the back-end on its own
+	// thread gets the same keyframes in the same order: same closures, same
+	// optimised poses to the last bit (people-crossing, dead reckoning: 30+
+	// closures and several optimisations).
+	auto direct = runStage("people-crossing", "odometry", {"loop_closure.background_thread=false"});
+	auto background = runStage("people-crossing", "odometry", {"loop_closure.background_thread=true"});
+	const auto& a = direct->loopClosureStage()->backend();
+	const auto& b = background->loopClosureStage()->backend();
+	ASSERT_GT(a.timing().closures_accepted, 10u);
+	EXPECT_EQ(a.timing().closures_accepted, b.timing().closures_accepted);
+	EXPECT_EQ(a.timing().optimizations, b.timing().optimizations);
+	ASSERT_EQ(a.closures().size(), b.closures().size());
+	for (size_t i = 0; i < a.closures().size(); ++i) EXPECT_EQ(a.closures()[i].reason, b.closures()[i].reason);
+	ASSERT_EQ(a.graph().nodes().size(), b.graph().nodes().size());
+	for (size_t k = 0; k < a.graph().nodes().size(); ++k)
+	{
+		const auto &p = a.graph().nodes()[k].pose, &q = b.graph().nodes()[k].pose;
+		ASSERT_TRUE(p.x == q.x && p.y == q.y && p.phi == q.phi) << "node " << k;
+	}
+	// the back-end's time is reported per keyframe, from its own thread
+	EXPECT_EQ(background->loopClosureStage()->backgroundTimings().size(), a.timing().keyframes);
+	EXPECT_TRUE(direct->loopClosureStage()->backgroundTimings().empty());
+}
+
 /** Places that look alike from one scan: the ring corridor's outer corner and
  * the inner block's corner (floor, odometry-gap), a straight corridor with one
  * door niche (corridor). Before the free-side check and the confirmation,

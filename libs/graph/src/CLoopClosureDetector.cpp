@@ -52,7 +52,10 @@ double closureInformationGain(const Eigen::Matrix3d& relative, double closureXyS
 	return 0.5 * std::log(sum.determinant() / closureVar.prod());
 }
 
-CLoopClosureDetector::CLoopClosureDetector(const TOptions& options) : m_options(options) {}
+CLoopClosureDetector::CLoopClosureDetector(const TOptions& options)
+	: m_options(options), m_pool(std::make_unique<common::CTaskPool>(static_cast<size_t>(options.search_threads)))
+{
+}
 CLoopClosureDetector::~CLoopClosureDetector() = default;
 
 void CLoopClosureDetector::addKeyframe(size_t node, const TPointCloud2D& points, const CPoseGraph& graph)
@@ -140,12 +143,10 @@ std::vector<CLoopClosureDetector::TCandidate> CLoopClosureDetector::candidates(
 	return out;
 }
 
-std::vector<TLoopClosure> CLoopClosureDetector::detect(size_t node, const CPoseGraph& graph,
-													   const TRelativeCovariance& relativeCovariance)
+std::vector<CLoopClosureDetector::TCandidate> CLoopClosureDetector::searched(
+	size_t node, const CPoseGraph& graph, const TRelativeCovariance& relativeCovariance)
 {
-	std::vector<TLoopClosure> out;
-	if (node != m_queryNode || node % static_cast<size_t>(m_options.detect_every_n_keyframes) != 0) return out;
-	int accepted = 0;
+	std::vector<TCandidate> out;
 	for (const auto& c : candidates(node, graph, relativeCovariance))
 	{
 		// Seen from a keyframe 0.5 m away, a submap that matched nowhere in
@@ -154,14 +155,46 @@ std::vector<TLoopClosure> CLoopClosureDetector::detect(size_t node, const CPoseG
 		const auto low = m_lowScoreAt.find(c.submap);
 		if (low != m_lowScoreAt.end() &&
 			node < low->second + static_cast<size_t>(m_options.retest_low_score_after_keyframes))
-		{
 			++m_skippedRecentLowScore;
-			continue;
+		else
+			out.push_back(c);
+	}
+	return out;
+}
+
+std::vector<TLoopClosure> CLoopClosureDetector::verifyAll(const std::vector<TCandidate>& cands, size_t node,
+														  const CPoseGraph& graph)
+{
+	std::vector<TLoopClosure> out(cands.size());
+	const size_t batch = static_cast<size_t>(std::max(1, m_options.max_cached_fields));
+	for (size_t first = 0; first < cands.size(); first += batch)
+	{
+		const size_t count = std::min(batch, cands.size() - first);
+		// the cache is only touched here: the batch's fields are its most recent ones
+		std::vector<const TSubmapField*> fields;
+		for (size_t k = 0; k < count; ++k) fields.push_back(&fieldOf(cands[first + k].submap));
+		m_pool->run(count, [&](size_t k) { out[first + k] = verify(cands[first + k], *fields[k], node, graph); });
+	}
+	return out;
+}
+
+std::vector<TLoopClosure> CLoopClosureDetector::detect(size_t node, const CPoseGraph& graph,
+													   const TRelativeCovariance& relativeCovariance)
+{
+	if (node != m_queryNode || node % static_cast<size_t>(m_options.detect_every_n_keyframes) != 0) return {};
+	// Candidates are verified side by side; what follows is the order a
+	// one-by-one search would have seen them in, so the result is the same.
+	std::vector<TLoopClosure> out = verifyAll(searched(node, graph, relativeCovariance), node, graph);
+	int accepted = 0;
+	for (size_t k = 0; k < out.size(); ++k)
+	{
+		if (out[k].reason == "low score") m_lowScoreAt[out[k].submap] = node;
+		accepted += out[k].accepted ? 1 : 0;
+		if (m_options.max_closures_per_keyframe > 0 && accepted >= m_options.max_closures_per_keyframe)
+		{
+			out.resize(k + 1);
+			break;
 		}
-		out.push_back(verify(c, node, graph));
-		if (out.back().reason == "low score") m_lowScoreAt[c.submap] = node;
-		accepted += out.back().accepted ? 1 : 0;
-		if (m_options.max_closures_per_keyframe > 0 && accepted >= m_options.max_closures_per_keyframe) break;
 	}
 	return out;
 }

@@ -108,7 +108,8 @@ bool CLoopClosureDetector::refineWithIcp(const TSubmapField& field, TLoopClosure
 	return true;
 }
 
-TLoopClosure CLoopClosureDetector::verify(const TCandidate& c, size_t node, const CPoseGraph& graph)
+TLoopClosure CLoopClosureDetector::verify(const TCandidate& c, const TSubmapField& field, size_t node,
+										  const CPoseGraph& graph) const
 {
 	const auto t0 = std::chrono::steady_clock::now();
 	const auto& sm = m_submaps[c.submap];
@@ -133,7 +134,6 @@ TLoopClosure CLoopClosureDetector::verify(const TCandidate& c, size_t node, cons
 	// and which reason a rejected one records: score, ICP, free side,
 	// uniqueness (a second search), then the consistency gate, the only one
 	// that needs the closure's score-surface covariance
-	const auto& field = fieldOf(c.submap);
 	TCorrelativeMatch best;
 	if (!matchBest(field.matcher, c, out, best) || !refineWithIcp(field, out)) return finish();
 	if (!checkFreeSide(field, out) || !checkUniqueness(field.matcher, c, best, out)) return finish();

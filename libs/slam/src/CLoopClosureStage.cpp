@@ -25,6 +25,28 @@ CLoopClosureStage::CLoopClosureStage(const TLoopClosureStageOptions& options,
 									 const maps::CTiledGridGeometry& tiles)
 	: m_options(options), m_backendOptions(backendOptions), m_tiles(tiles), m_backend(backendOptions, options.detector)
 {
+	if (!options.background_thread) return;
+	m_worker = std::make_unique<common::CSerialWorker<graph::TKeyframe>>([this](graph::TKeyframe& kf) {
+		const graph::TKeyframeResult r = m_backend.addKeyframe(kf);
+		m_backgroundTimings.push_back({r.time_ms, r.optimized ? r.optimization.time_ms : -1.0});
+	});
+}
+
+void CLoopClosureStage::wait() const
+{
+	if (m_worker) m_worker->wait();
+}
+
+const graph::CGraphBackend& CLoopClosureStage::backend() const
+{
+	wait();
+	return m_backend;
+}
+
+const std::vector<TBackendCallTiming>& CLoopClosureStage::backgroundTimings() const
+{
+	wait();
+	return m_backgroundTimings;
 }
 
 bool CLoopClosureStage::isKeyframe(const mrpt::math::TPose2D& pose) const
@@ -92,12 +114,14 @@ std::optional<graph::TKeyframeResult> CLoopClosureStage::process(const TPoseEsti
 	m_lastKeyframeCovariance = estimate.covariance;
 	m_gapSinceKeyframe = false;
 	m_scanKeyframe.push_back(m_keyframeOnline.size() - 1);
-	return m_backend.addKeyframe(kf);
+	if (!m_worker) return m_backend.addKeyframe(kf);
+	m_worker->push(std::move(kf));
+	return std::nullopt;
 }
 
 std::vector<mrpt::poses::CPose2D> CLoopClosureStage::correctedScanPoses() const
 {
-	const auto& nodes = m_backend.graph().nodes();
+	const auto& nodes = backend().graph().nodes();
 	std::vector<mrpt::poses::CPose2D> out;
 	out.reserve(m_scanOnline.size());
 	for (size_t s = 0; s < m_scanOnline.size(); ++s)

@@ -253,7 +253,10 @@ void CMappingPipeline::updateLoopClosure(const mrpt::obs::CObservation2DRangeSca
 		for (size_t b = 0; b < onPeople.size(); ++b) notStatic[b] = notStatic[b] || onPeople[b];
 	}
 	{
-		common::CStageTimer::CScope t(m_timer, "loop_closure");
+		// On the background thread the back-end's own time is added in finish();
+		// here only what this thread spends handing keyframes over.
+		common::CStageTimer::CScope t(m_timer,
+									  m_loopOptions.background_thread ? "loop_closure_handover" : "loop_closure");
 		const auto result = m_loop->process(estimate, rangeData, notStatic.empty() ? nullptr : &notStatic);
 		if (result && result->optimized) m_timer.add("loop_closure_optimize", result->optimization.time_ms * 1e-3);
 	}
@@ -263,6 +266,12 @@ void CMappingPipeline::updateLoopClosure(const mrpt::obs::CObservation2DRangeSca
 void CMappingPipeline::finish()
 {
 	releaseWaiting(true);
+	if (m_loop)
+		for (const auto& call : m_loop->backgroundTimings())
+		{
+			m_timer.add("loop_closure", call.keyframe_ms * 1e-3);
+			if (call.optimize_ms >= 0) m_timer.add("loop_closure_optimize", call.optimize_ms * 1e-3);
+		}
 	if (!m_loop || !m_loop->optimized() || !m_loopOptions.rerender_map || m_sonar.mappingOptions().enabled) return;
 	common::CStageTimer::CScope t(m_timer, "map_rerender");
 	const auto poses = m_loop->correctedScanPoses();

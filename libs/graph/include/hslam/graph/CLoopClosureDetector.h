@@ -41,6 +41,7 @@
  * "dropped by optimiser"). */
 #pragma once
 
+#include <hslam/common/CTaskPool.h>
 #include <hslam/graph/CCorrelativeScanMatcher.h>
 #include <hslam/graph/CPoseGraph.h>
 #include <hslam/graph/free_space_check.h>
@@ -89,6 +90,10 @@ struct TLoopClosureOptions
 	double consistency_chi2 = 16.27;  //!< 3-dof chi2 gate (99.9 %) of the implied correction
 	double min_free_side_fraction = 0.5;  //!< of the query's wall hits that must come from the submap's free side
 	int max_cached_fields = 16;  //!< likelihood fields kept in memory
+	/** Threads that verify one keyframe's candidates at once, this one
+	 * included (0: one per hardware thread; 1: one after the other). The
+	 * candidates are independent: the closures are the same for any value. */
+	int search_threads = 0;
 	int confirm_within_keyframes = 10;  //!< a closure waits this long for a second that agrees (0: none needed)
 	double confirm_xy_m = 0.3, confirm_yaw_rad = mrpt::DEG2RAD(3.0);  //!< agreement of two closures' corrections
 	/** A candidate is tested only if a closure of the typical accuracy below
@@ -125,6 +130,7 @@ struct TLoopClosureOptions
 		v.real("consistency_chi2", consistency_chi2, 0.0, 1e9);
 		v.real("min_free_side_fraction", min_free_side_fraction, 0.0, 1.0);
 		v.integer("max_cached_fields", max_cached_fields, 1, 10000);
+		v.integer("search_threads", search_threads, 0, 256);
 		v.integer("confirm_within_keyframes", confirm_within_keyframes, 0, 1000);
 		v.real("confirm_xy_m", confirm_xy_m, 0.0, 100.0);
 		v.degrees("confirm_yaw_deg", confirm_yaw_rad, 0.0, 180.0);
@@ -204,7 +210,13 @@ class CLoopClosureDetector
 	struct TSubmapField;
 	std::vector<TCandidate> candidates(size_t node, const CPoseGraph& graph,
 									   const TRelativeCovariance& relativeCovariance);
-	TLoopClosure verify(const TCandidate& c, size_t node, const CPoseGraph& graph);
+	/** The candidates to search now (not skipped after a recent low score). */
+	std::vector<TCandidate> searched(size_t node, const CPoseGraph& graph,
+									 const TRelativeCovariance& relativeCovariance);
+	/** verify() of every candidate, at most max_cached_fields at a time (their
+	 * fields stay cached while the pool's threads read them). */
+	std::vector<TLoopClosure> verifyAll(const std::vector<TCandidate>& cands, size_t node, const CPoseGraph& graph);
+	TLoopClosure verify(const TCandidate& c, const TSubmapField& field, size_t node, const CPoseGraph& graph) const;
 	bool matchBest(const CCorrelativeScanMatcher& m, const TCandidate& c, TLoopClosure& out,
 				   TCorrelativeMatch& best) const;
 	bool checkUniqueness(const CCorrelativeScanMatcher& m, const TCandidate& c, const TCorrelativeMatch& best,
@@ -224,6 +236,7 @@ class CLoopClosureDetector
 	size_t m_skippedRecentLowScore = 0;
 	std::map<size_t, size_t> m_lowScoreAt;  //!< submap -> keyframe node of its last low-score search
 	std::list<std::pair<size_t, std::unique_ptr<TSubmapField>>> m_fieldCache;  //!< most recent first
+	std::unique_ptr<common::CTaskPool> m_pool;  //!< verifies a keyframe's candidates side by side
 };
 
 /** Mutual information (nats) between the graph's relative pose of a query

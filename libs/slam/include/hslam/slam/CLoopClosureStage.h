@@ -24,15 +24,24 @@
  * corrected pose of scan s following keyframe k is
  *     optimised_k (+) online_k^-1 (+) online_s.
  *
+ * With background_thread (default) the back-end runs on its own thread
+ * (common::CSerialWorker): keyframes are queued in order and handed to it one
+ * by one, exactly as the direct call would, so trajectories, closures and
+ * graph are the same bit for bit; only the wall time changes. Everything that
+ * reads the back-end (backend(), correctedScanPoses(), optimized()) first
+ * waits for the queue to drain, and a back-end error is rethrown there.
+ *
  * INI: [loop_closure] = this stage's keys + graph::TLoopClosureOptions;
  *      [graph] = graph::TGraphBackendOptions. No file I/O. */
 #pragma once
 
+#include <hslam/common/CSerialWorker.h>
 #include <hslam/common/range_data.h>
 #include <hslam/graph/CGraphBackend.h>
 #include <hslam/maps/CTiledGridGeometry.h>
 #include <hslam/slam/CPoseEstimator.h>
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -56,6 +65,9 @@ struct TLoopClosureStageOptions
 	 * keyframe's frame and floored as above. */
 	std::string edge_covariance = "posterior";
 	bool rerender_map = true;  //!< re-insert every scan at its corrected pose at the end
+	/** Run the back-end on a thread of its own (same results; the front-end
+	 * does not wait for the loop-closure search). */
+	bool background_thread = true;
 	graph::TLoopClosureOptions detector;
 
 	template <class V>
@@ -69,8 +81,16 @@ struct TLoopClosureStageOptions
 		v.real("relative_yaw_std_per_rad", relative_yaw_std_per_rad, 0.0, 10.0);
 		v.choice("edge_covariance", edge_covariance, {"growth", "posterior"});
 		v.flag("rerender_map", rerender_map);
+		v.flag("background_thread", background_thread);
 		detector.visit(v);
 	}
+};
+
+/** One back-end call made on the background thread. */
+struct TBackendCallTiming
+{
+	double keyframe_ms = 0;  //!< the whole addKeyframe()
+	double optimize_ms = -1;  //!< its optimisation, -1 if it did not optimise
 };
 
 class CLoopClosureStage
@@ -81,16 +101,24 @@ class CLoopClosureStage
 
 	/** One scan: its estimate, range record and the beams to keep out of the
 	 * keyframe points (people; may be null). Returns the back-end's result if
-	 * the scan became a keyframe. */
+	 * the scan became a keyframe and the back-end runs on this thread; with
+	 * background_thread the keyframe is queued and nothing is returned. */
 	std::optional<graph::TKeyframeResult> process(const TPoseEstimate& estimate, const common::TRangeData& scan,
 												  const std::vector<bool>* excludedBeams);
 
 	/** Corrected pose of every scan processed (see file comment). */
 	std::vector<mrpt::poses::CPose2D> correctedScanPoses() const;
 	/** The graph has been optimised at least once (an accepted closure). */
-	bool optimized() const { return m_backend.timing().optimizations > 0; }
+	bool optimized() const { return backend().timing().optimizations > 0; }
 
-	const graph::CGraphBackend& backend() const { return m_backend; }
+	/** The back-end, once every keyframe queued so far has been processed. */
+	const graph::CGraphBackend& backend() const;
+	/** Returns once the background thread has processed every keyframe queued
+	 * (at once without it); rethrows the back-end's error, if any. */
+	void wait() const;
+	/** Time of each back-end call made on the background thread, in keyframe
+	 * order (empty without it; waits first). */
+	const std::vector<TBackendCallTiming>& backgroundTimings() const;
 	const TLoopClosureStageOptions& options() const { return m_options; }
 	const graph::TGraphBackendOptions& backendOptions() const { return m_backendOptions; }
 
@@ -109,6 +137,9 @@ class CLoopClosureStage
 	std::vector<size_t> m_scanKeyframe;  //!< keyframe (node) each scan follows
 	bool m_gapSinceKeyframe = false;
 	std::unordered_map<maps::TTileIndex, int, maps::TTileIndexHash> m_tileGroups;  //!< tile -> group, first visit order
+	std::vector<TBackendCallTiming> m_backgroundTimings;  //!< written by the worker only
+	/** Last member: destroyed (and joined) before what its thread uses. */
+	std::unique_ptr<common::CSerialWorker<graph::TKeyframe>> m_worker;
 };
 
 }  // namespace hslam::slam
