@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 #include <hslam/common/CSerialWorker.h>
 
+#include <atomic>
+#include <mutex>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -26,6 +28,7 @@ TEST(SerialWorker, ConsumesEveryItemInPushOrderOnOneOtherThread)
 			if (i == 1000) worker.wait();  // a wait in the middle changes nothing
 		}
 		worker.wait();
+		EXPECT_EQ(worker.pending(), 0u);
 		ASSERT_EQ(seen.size(), 2000u);
 	}
 	for (int i = 0; i < 2000; ++i) ASSERT_EQ(seen[static_cast<size_t>(i)], i);
@@ -56,4 +59,22 @@ TEST(SerialWorker, RethrowsTheConsumersErrorAndDropsTheItemsAfterIt)
 	EXPECT_THROW(worker.push(4), std::runtime_error);  // every later call fails too
 	EXPECT_THROW(worker.wait(), std::runtime_error);
 	EXPECT_EQ(seen, (std::vector<int>{0, 1, 2}));
+}
+
+TEST(SerialWorker, CountsWhatIsStillQueued)
+{
+	// the consumer holds the first item until released: the rest stay queued
+	std::mutex gate;
+	std::unique_lock<std::mutex> closed(gate);
+	std::atomic<int> consumed{0};
+	CSerialWorker<int> worker([&](int&) {
+		std::lock_guard<std::mutex> pass(gate);
+		++consumed;
+	});
+	for (int i = 0; i < 5; ++i) worker.push(i);
+	EXPECT_EQ(worker.pending(), 5u);  // one held by the consumer, four queued
+	closed.unlock();
+	worker.wait();
+	EXPECT_EQ(worker.pending(), 0u);
+	EXPECT_EQ(consumed.load(), 5);
 }

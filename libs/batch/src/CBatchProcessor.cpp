@@ -65,7 +65,10 @@ TBatchResult CBatchProcessor::run()
 	TBatchResult result;
 	const auto pipelinePtr = processRawlog(config, result);
 	slam::CMappingPipeline& pipeline = *pipelinePtr;
-	pipeline.finish();  // map from the optimised graph, if any
+	if (const auto* loop = pipeline.loopClosureStage(); loop && m_request.show_progress)
+		if (const size_t queued = loop->queuedKeyframes(); queued > 0)
+			m_err << "Loop closure: finishing " << queued << " queued keyframe(s)\n";
+	pipeline.finish();  // waits for the loop-closure back-end; map from the optimised graph, if any
 	result.counters = pipeline.counters();
 	result.files_written = slam::writeMappingOutputs(pipeline, outputOptions, m_request.output_dir);
 	writeEffectiveConfig(pipeline, outputOptions);

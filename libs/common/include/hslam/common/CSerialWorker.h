@@ -66,6 +66,13 @@ class CSerialWorker
 		if (m_failure) std::rethrow_exception(m_failure);
 	}
 
+	/** Items pushed and not yet consumed (the one in progress included). */
+	size_t pending()
+	{
+		std::lock_guard<std::mutex> lock(m_mutex);
+		return m_queue.size() + (m_busy ? 1 : 0);
+	}
+
    private:
 	void run()
 	{

@@ -116,6 +116,8 @@ class CLoopClosureStage
 	/** Returns once the background thread has processed every keyframe queued
 	 * (at once without it); rethrows the back-end's error, if any. */
 	void wait() const;
+	/** Keyframes queued for the background thread and not yet processed (0 without it). */
+	size_t queuedKeyframes() const { return m_worker ? m_worker->pending() : 0; }
 	/** Time of each back-end call made on the background thread, in keyframe
 	 * order (empty without it; waits first). */
 	const std::vector<TBackendCallTiming>& backgroundTimings() const;
