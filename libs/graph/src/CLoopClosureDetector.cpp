@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 #include "loop_closure_candidate.h"
 
@@ -52,8 +53,20 @@ double closureInformationGain(const Eigen::Matrix3d& relative, double closureXyS
 	return 0.5 * std::log(sum.determinant() / closureVar.prod());
 }
 
+namespace
+{
+/** search_threads, or with 0 one per hardware thread but no more than a
+ * keyframe has candidates (more would never get work). */
+size_t searchThreads(const TLoopClosureOptions& o)
+{
+	if (o.search_threads > 0) return static_cast<size_t>(o.search_threads);
+	const size_t hardware = std::max(1u, std::thread::hardware_concurrency());
+	return std::min(hardware, static_cast<size_t>(std::max(1, o.max_candidates)));
+}
+}  // namespace
+
 CLoopClosureDetector::CLoopClosureDetector(const TOptions& options)
-	: m_options(options), m_pool(std::make_unique<common::CTaskPool>(static_cast<size_t>(options.search_threads)))
+	: m_options(options), m_pool(std::make_unique<common::CTaskPool>(searchThreads(options)))
 {
 }
 CLoopClosureDetector::~CLoopClosureDetector() = default;

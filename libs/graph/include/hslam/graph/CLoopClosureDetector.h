@@ -91,8 +91,9 @@ struct TLoopClosureOptions
 	double min_free_side_fraction = 0.5;  //!< of the query's wall hits that must come from the submap's free side
 	int max_cached_fields = 16;  //!< likelihood fields kept in memory
 	/** Threads that verify one keyframe's candidates at once, this one
-	 * included (0: one per hardware thread; 1: one after the other). The
-	 * candidates are independent: the closures are the same for any value. */
+	 * included (0: one per hardware thread, at most max_candidates; 1: one
+	 * after the other). The candidates are independent: the closures are the
+	 * same for any value. */
 	int search_threads = 0;
 	int confirm_within_keyframes = 10;  //!< a closure waits this long for a second that agrees (0: none needed)
 	double confirm_xy_m = 0.3, confirm_yaw_rad = mrpt::DEG2RAD(3.0);  //!< agreement of two closures' corrections
