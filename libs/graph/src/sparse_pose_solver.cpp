@@ -4,6 +4,8 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace hslam::graph
@@ -51,37 +53,92 @@ double chi2Of(const std::vector<TGraphNode>& nodes, const std::vector<TGraphEdge
 	return sum;
 }
 
-/** Adds a 3x3 block at free-node block (r, c) (node 0 is fixed: no block). */
-void addBlock(std::vector<Eigen::Triplet<double>>& t, size_t r, size_t c, const Eigen::Matrix3d& m)
+/** Where the active edges' 3x3 blocks live in H's value array: H's pattern
+ * is the same at every iteration of a solve, so it is built once and an
+ * iteration only writes numbers (assembling from triplets, which sorts them
+ * again each time, was half of a solve). Per active edge and block (from-from,
+ * from-to, to-from, to-to), per column j of the block, the value index of
+ * the block's first row in that column; -1 for a block of node 0 (fixed). */
+struct TBlockSlots
 {
-	if (r == 0 || c == 0) return;
-	for (int i = 0; i < 3; ++i)
-		for (int j = 0; j < 3; ++j)
-			t.emplace_back(static_cast<int>(3 * (r - 1) + i), static_cast<int>(3 * (c - 1) + j), m(i, j));
-}
+	std::array<std::array<Eigen::Index, 3>, 4> first{};
+};
 
-/** The normal equations H dx = -g of the active edges at the current poses. */
-void buildNormalEquations(const std::vector<TGraphNode>& nodes, const std::vector<TGraphEdge>& edges,
-						  Eigen::SparseMatrix<double>& H, Eigen::VectorXd& g)
+/** H's pattern (every value 0) for the active edges, and their slots. */
+std::vector<TBlockSlots> patternOf(size_t nodeCount, const std::vector<TGraphEdge>& edges, Eigen::SparseMatrix<double>& H)
 {
-	const auto n = static_cast<Eigen::Index>(3 * (nodes.size() - 1));
+	const auto n = static_cast<Eigen::Index>(3 * (nodeCount - 1));
 	std::vector<Eigen::Triplet<double>> t;
 	t.reserve(36 * edges.size());
-	g.setZero(n);
+	const auto blocks = [](const TGraphEdge& e) {
+		return std::array<std::pair<size_t, size_t>, 4>{
+			{{e.from, e.from}, {e.from, e.to}, {e.to, e.from}, {e.to, e.to}}};
+	};
+	for (const auto& e : edges)
+		if (e.active)
+			for (const auto& [r, c] : blocks(e))
+				if (r > 0 && c > 0)
+					for (int i = 0; i < 3; ++i)
+						for (int j = 0; j < 3; ++j)
+							t.emplace_back(static_cast<int>(3 * (r - 1) + i), static_cast<int>(3 * (c - 1) + j), 0.0);
+	H.resize(n, n);
+	H.setFromTriplets(t.begin(), t.end());
+	std::vector<TBlockSlots> slots;
 	for (const auto& e : edges)
 	{
 		if (!e.active) continue;
+		TBlockSlots s;
+		const auto b = blocks(e);
+		for (size_t k = 0; k < 4; ++k)
+			for (int j = 0; j < 3; ++j)
+			{
+				s.first[k][static_cast<size_t>(j)] = -1;
+				if (b[k].first == 0 || b[k].second == 0) continue;
+				const auto col = static_cast<Eigen::Index>(3 * (b[k].second - 1) + static_cast<size_t>(j));
+				const auto row = static_cast<int>(3 * (b[k].first - 1));
+				const int* begin = H.innerIndexPtr() + H.outerIndexPtr()[col];
+				const int* end = H.innerIndexPtr() + H.outerIndexPtr()[col + 1];
+				s.first[k][static_cast<size_t>(j)] = std::lower_bound(begin, end, row) - H.innerIndexPtr();
+			}
+		slots.push_back(s);
+	}
+	return slots;
+}
+
+/** Adds a 3x3 block at its slots (none for a block of node 0). */
+void addBlock(double* values, const std::array<Eigen::Index, 3>& first, const Eigen::Matrix3d& m)
+{
+	for (int j = 0; j < 3; ++j)
+	{
+		const Eigen::Index at = first[static_cast<size_t>(j)];
+		if (at < 0) continue;
+		for (int i = 0; i < 3; ++i) values[at + i] += m(i, j);
+	}
+}
+
+/** The normal equations H dx = -g of the active edges at the current poses,
+ * into H's pattern (patternOf). Each entry sums its edges' terms in edge
+ * order, as summing triplets did: the same numbers, bit for bit. */
+void buildNormalEquations(const std::vector<TGraphNode>& nodes, const std::vector<TGraphEdge>& edges,
+						  const std::vector<TBlockSlots>& slots, Eigen::SparseMatrix<double>& H, Eigen::VectorXd& g)
+{
+	std::fill(H.valuePtr(), H.valuePtr() + H.nonZeros(), 0.0);
+	g.setZero(H.rows());
+	double* values = H.valuePtr();
+	size_t k = 0;
+	for (const auto& e : edges)
+	{
+		if (!e.active) continue;
+		const auto& s = slots[k++];
 		const auto l = linearize(nodes[e.from].pose, nodes[e.to].pose, e.relative);
 		const Eigen::Matrix3d& W = e.information;
-		addBlock(t, e.from, e.from, l.A.transpose() * W * l.A);
-		addBlock(t, e.from, e.to, l.A.transpose() * W * l.B);
-		addBlock(t, e.to, e.from, l.B.transpose() * W * l.A);
-		addBlock(t, e.to, e.to, l.B.transpose() * W * l.B);
+		addBlock(values, s.first[0], l.A.transpose() * W * l.A);
+		addBlock(values, s.first[1], l.A.transpose() * W * l.B);
+		addBlock(values, s.first[2], l.B.transpose() * W * l.A);
+		addBlock(values, s.first[3], l.B.transpose() * W * l.B);
 		if (e.from > 0) g.segment<3>(3 * static_cast<Eigen::Index>(e.from - 1)) += l.A.transpose() * W * l.error;
 		if (e.to > 0) g.segment<3>(3 * static_cast<Eigen::Index>(e.to - 1)) += l.B.transpose() * W * l.error;
 	}
-	H.resize(n, n);
-	H.setFromTriplets(t.begin(), t.end());
 }
 
 std::vector<TGraphNode> stepped(const std::vector<TGraphNode>& nodes, const Eigen::VectorXd& dx)
@@ -103,13 +160,14 @@ size_t solvePoseGraphSparse(std::vector<TGraphNode>& nodes, const std::vector<TG
 	if (nodes.size() < 2) return 0;
 	Eigen::SparseMatrix<double> H;
 	Eigen::VectorXd g;
+	const std::vector<TBlockSlots> slots = patternOf(nodes.size(), edges, H);
 	Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
 	double chi2 = chi2Of(nodes, edges), lambda = o.initial_lambda;
 	size_t iterations = 0;
 	for (int it = 0; it < o.max_iterations; ++it)
 	{
 		++iterations;
-		buildNormalEquations(nodes, edges, H, g);
+		buildNormalEquations(nodes, edges, slots, H, g);
 		if (it == 0) ldlt.analyzePattern(H);  // the pattern is the same at every iteration
 		for (int retry = 0; retry < 10; ++retry, lambda *= 10)
 		{
