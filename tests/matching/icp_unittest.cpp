@@ -181,6 +181,34 @@ TEST(IcpMatcher, FarSeedsAreSkippedOnlyWhenTheNearSeedsAgree)
 	EXPECT_NEAR(wide.score, 1.0, 1e-9);
 }
 
+TEST(IcpMatcher, RestartPairsSideBySideGiveTheSameResult)
+{
+	// [pose_estimation] parallel_restarts: the +-k seeds of a restart run
+	// on two threads; the candidates keep their order, so the chosen result
+	// is the one-thread one, bit for bit (the room of the tests above, from
+	// 120 deg with a 60 deg step: all five seeds run, in two basins).
+	const TRoomView view;
+	const Eigen::Matrix3d cov = Eigen::Vector3d(0.01, 0.01, std::pow(60 * kDeg, 2)).asDiagonal();
+	CIcpMatcher::TOptions o;
+	o.engine = "cached";
+	o.restart_below_fit = 0.9;
+	o.restart_max_step_rad = 90 * kDeg;
+	o.restart_same_basin_m = 0.02;
+	CIcpMatcher serial(o), sideBySide(o);
+	sideBySide.setRestartPool(std::make_shared<hslam::common::CTaskPool>(2));
+	for (double seedDeg : {120.0, 160.0, -100.0})
+	{
+		const CPose2D from(0.3, -0.2, seedDeg * kDeg);
+		const auto a = serial.match(view.index, toPointsMap(view.scan), from, cov);
+		const auto b = sideBySide.match(view.index, toPointsMap(view.scan), from, cov);
+		ASSERT_GE(a.seeds_aligned, 3u) << seedDeg;  // restarted
+		EXPECT_EQ(a.seeds_aligned, b.seeds_aligned) << seedDeg;
+		EXPECT_TRUE(a.pose.x() == b.pose.x() && a.pose.y() == b.pose.y() && a.pose.phi() == b.pose.phi()) << seedDeg;
+		EXPECT_EQ(a.score, b.score) << seedDeg;
+		EXPECT_EQ(a.fit, b.fit) << seedDeg;
+	}
+}
+
 TEST(IcpMatcher, PointToLineStepsLeaveThePointToPointFixedPoint)
 {
 	// The same room and scan; seed 10 deg off. Point-to-point ICP stops 2.3

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <thread>
 #include <mrpt/math/wrap2pi.h>
 
 namespace hslam::slam
@@ -77,6 +78,9 @@ CScanMatchingPoseEstimator::CScanMatchingPoseEstimator(const TPoseEstimationOpti
 	  m_icpNoise(m_ukfOptions.adaptation),
 	  m_timer(timer)
 {
+	if (!options.parallel_restarts || std::thread::hardware_concurrency() < 2) return;
+	const auto pool = std::make_shared<common::CTaskPool>(2);  // restarts come in pairs
+	for (auto* icp : {&m_icp, &m_icpWithoutPrior, &m_icpStandstill}) icp->setRestartPool(pool);
 }
 
 void CScanMatchingPoseEstimator::saveOptions(mrpt::config::CConfigFileBase& out) const

@@ -17,6 +17,7 @@
  * by fusion::CAdaptiveMeasurementNoise. */
 #pragma once
 
+#include <hslam/common/CTaskPool.h>
 #include <hslam/matching/CPointToPointIcp.h>
 #include <hslam/matching/competing_basins.h>
 #include <hslam/matching/icp_covariance.h>
@@ -25,6 +26,7 @@
 #include <mrpt/poses/CPose2D.h>
 
 #include <Eigen/Core>
+#include <memory>
 
 namespace hslam::matching
 {
@@ -162,13 +164,19 @@ class CIcpMatcher
 
 	const TOptions& options() const { return m_options; }
 
+	/** Threads on which the restarts' +-k seed pairs run side by side
+	 * (engine = cached: the two alignments only read the reference). The
+	 * candidates keep their order, so the result is the one-thread one.
+	 * Null (the default): one after the other. Shared by copies. */
+	void setRestartPool(std::shared_ptr<common::CTaskPool> pool) { m_restartPool = std::move(pool); }
+
    private:
 	/** Whether a first result is also restarted on its fit (restart_below_fit, seed_fit_sigma_m > 0). */
 	bool restartsOnFit() const;
 	/** The first alignment, or the best of the restarts around the prior. */
 	template <class AlignAt>
 	TPoseMatch bestOfRestarts(AlignAt alignAt, const mrpt::poses::CPose2D& initialGuess,
-							  const Eigen::Matrix3d& initialCov) const;
+							  const Eigen::Matrix3d& initialCov, bool pairsSideBySide) const;
 	/** The chosen result's floors and quality (its covariance already set). */
 	TPoseMatch withQuality(TPoseMatch result) const;
 	/** One MRPT ICP run: pose, score and MRPT's covariance (no floors, no quality yet). */
@@ -180,6 +188,7 @@ class CIcpMatcher
 
 	TOptions m_options;
 	CPointToPointIcp m_cached;
+	std::shared_ptr<common::CTaskPool> m_restartPool;
 };
 
 }  // namespace hslam::matching

@@ -84,6 +84,10 @@ struct TPoseEstimationOptions
 	 * contradictedMatchSeed; the fit, [icp] seed_fit_sigma_m, decides), and
 	 * restart the filter there once the refusals declare a stall. */
 	bool seed_refused_matches = true;
+	/** icp_matcher = mrpt with [icp] engine = cached: an ICP restart's two
+	 * seeds (turned by +-k steps) are aligned on two threads at once; same
+	 * results, less wall time. */
+	bool parallel_restarts = true;
 
 	template <class V>
 	void visit(V& v)
@@ -99,6 +103,7 @@ struct TPoseEstimationOptions
 		v.degrees("standstill_max_deg", standstill_max_rad, 0.0, 360.0);
 		v.choice("icp_matcher", icp_matcher, {"mrpt", "point_to_line", "mrpt+point_to_line"});
 		v.flag("seed_refused_matches", seed_refused_matches);
+		v.flag("parallel_restarts", parallel_restarts);
 	}
 };
 
