@@ -266,9 +266,10 @@ void CMappingPipeline::updateLoopClosure(const mrpt::obs::CObservation2DRangeSca
 void CMappingPipeline::finish()
 {
 	releaseWaiting(true);
-	if (m_loop)
-		for (const auto& call : m_loop->backgroundTimings())
+	if (m_loop)  // the back-end thread's calls since the last finish() (waits for it)
+		for (const auto& calls = m_loop->backgroundTimings(); m_loopCallsTimed < calls.size(); ++m_loopCallsTimed)
 		{
+			const TBackendCallTiming& call = calls[m_loopCallsTimed];
 			m_timer.add("loop_closure", call.keyframe_ms * 1e-3);
 			if (call.optimize_ms >= 0) m_timer.add("loop_closure_optimize", call.optimize_ms * 1e-3);
 		}

@@ -220,6 +220,7 @@ class CMappingPipeline
 	std::vector<TScanObserver> m_scanObservers;
 	std::vector<TEstimateObserver> m_estimateObservers;
 	std::unique_ptr<CLoopClosureStage> m_loop;  //!< null unless [loop_closure] enabled
+	size_t m_loopCallsTimed = 0;  //!< back-end thread calls already in m_timer (finish() may run again)
 	TLoopClosureStageOptions m_loopOptions;
 	graph::TGraphBackendOptions m_graphOptions;
 	CScanArchive m_scanArchive;  //!< filled only with the loop-closure stage on
