@@ -61,3 +61,20 @@ TEST(GrazingIncidence, ThinObjectGoesLoneReturnStays)
 	for (const auto& p : kept) EXPECT_GT(std::hypot(p.x, p.y), 4.9);
 	EXPECT_NEAR(std::hypot(kept.back().x, kept.back().y), 7.0, 1e-9);  // nothing tells: kept
 }
+
+TEST(EveryKthPoint, KeepsAtMostTheLimitInScanOrder)
+{
+	// 1 081 points (0.25 deg over 270 deg) with a limit of 400: k = ceil(1081
+	// / 400) = 3, points 0, 3, ..., 1080: 361 kept
+	std::vector<mrpt::math::TPoint2D> points;
+	for (int i = 0; i < 1081; ++i) points.push_back({static_cast<double>(i), 0.0});
+	const auto kept = hslam::matching::everyKthPoint(points, 400);
+	ASSERT_EQ(kept.size(), 361u);
+	for (size_t j = 0; j < kept.size(); ++j) ASSERT_EQ(kept[j].x, 3.0 * static_cast<double>(j));
+	// at or under the limit, and with no limit, every point stays
+	EXPECT_EQ(hslam::matching::everyKthPoint(points, 1081).size(), 1081u);
+	EXPECT_EQ(hslam::matching::everyKthPoint(points, 0).size(), 1081u);
+	// 541 points with a limit of 400: k = 2, 271 kept
+	points.resize(541);
+	EXPECT_EQ(hslam::matching::everyKthPoint(points, 400).size(), 271u);
+}

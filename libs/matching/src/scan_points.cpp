@@ -36,4 +36,14 @@ std::vector<mrpt::math::TPoint2D> pointsOffGrazingIncidence(const common::TScanP
 	return out;
 }
 
+std::vector<mrpt::math::TPoint2D> everyKthPoint(std::vector<mrpt::math::TPoint2D> points, size_t maxPoints)
+{
+	if (maxPoints == 0 || points.size() <= maxPoints) return points;
+	const size_t k = (points.size() + maxPoints - 1) / maxPoints;
+	size_t kept = 0;
+	for (size_t i = 0; i < points.size(); i += k) points[kept++] = points[i];
+	points.resize(kept);
+	return points;
+}
+
 }  // namespace hslam::matching

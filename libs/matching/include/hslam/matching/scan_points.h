@@ -26,4 +26,11 @@ mrpt::maps::CSimplePointsMap toPointsMap(const std::vector<mrpt::math::TPoint2D>
 std::vector<mrpt::math::TPoint2D> pointsOffGrazingIncidence(const common::TScanPoints& points,
 															 double maxIncidence_rad);
 
+/** Every k-th point, k = ceil(size / maxPoints), starting with the first:
+ * at most maxPoints points, in scan order (0 keeps every point). A scanner
+ * denser than the matchers need (1 081 beams at 0.25 deg) is matched like a
+ * coarser one: the cost of ICP and of the point fallback of line matching
+ * grows with the points, their accuracy much less. */
+std::vector<mrpt::math::TPoint2D> everyKthPoint(std::vector<mrpt::math::TPoint2D> points, size_t maxPoints);
+
 }  // namespace hslam::matching

@@ -88,6 +88,11 @@ struct TPoseEstimationOptions
 	 * seeds (turned by +-k steps) are aligned on two threads at once; same
 	 * results, less wall time. */
 	bool parallel_restarts = true;
+	/** icp and lines+icp: a scan with more points than this is matched with
+	 * every k-th of them (ICP, its fit and covariance, the point fallback of
+	 * line matching; k = ceil(points / this)); lines are extracted from every
+	 * point, keyframes keep their own spacing. 0 = every point. */
+	int max_match_points = 0;
 
 	template <class V>
 	void visit(V& v)
@@ -104,6 +109,7 @@ struct TPoseEstimationOptions
 		v.choice("icp_matcher", icp_matcher, {"mrpt", "point_to_line", "mrpt+point_to_line"});
 		v.flag("seed_refused_matches", seed_refused_matches);
 		v.flag("parallel_restarts", parallel_restarts);
+		v.integer("max_match_points", max_match_points, 0, 1000000);
 	}
 };
 
