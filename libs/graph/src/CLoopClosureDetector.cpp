@@ -91,13 +91,14 @@ void CLoopClosureDetector::closeSubmap(const CPoseGraph& graph)
 	m_pending.clear();
 }
 
-const CLoopClosureDetector::TSubmapField& CLoopClosureDetector::fieldOf(size_t submap)
+CLoopClosureDetector::TSubmapField* CLoopClosureDetector::cachedField(size_t submap, bool& needsBuild)
 {
+	needsBuild = false;
 	for (auto it = m_fieldCache.begin(); it != m_fieldCache.end(); ++it)
 		if (it->first == submap)
 		{
 			m_fieldCache.splice(m_fieldCache.begin(), m_fieldCache, it);
-			return *m_fieldCache.front().second;
+			return m_fieldCache.front().second.get();
 		}
 	std::unique_ptr<TSubmapField> field;
 	if (!m_fieldCache.empty() && static_cast<int>(m_fieldCache.size()) >= m_options.max_cached_fields)
@@ -108,14 +109,19 @@ const CLoopClosureDetector::TSubmapField& CLoopClosureDetector::fieldOf(size_t s
 	}
 	else
 		field = std::make_unique<TSubmapField>(TSubmapField{CCorrelativeScanMatcher(m_options.matcher), {}, {}});
-	const auto& points = m_submaps[submap].points;
-	field->matcher.setReference(points);
-	field->free.build(field->matcher.grid(), m_submaps[submap].views);
-	field->points.reserve(points.size());
-	for (const auto& p : points) field->points.insertPointFast(p.x, p.y, 0);
 	m_fieldCache.emplace_front(submap, std::move(field));
 	while (static_cast<int>(m_fieldCache.size()) > m_options.max_cached_fields) m_fieldCache.pop_back();
-	return *m_fieldCache.front().second;
+	needsBuild = true;
+	return m_fieldCache.front().second.get();
+}
+
+void CLoopClosureDetector::buildField(TSubmapField& field, size_t submap) const
+{
+	const auto& points = m_submaps[submap].points;
+	field.matcher.setReference(points);
+	field.free.build(field.matcher.grid(), m_submaps[submap].views);
+	field.points.reserve(points.size());
+	for (const auto& p : points) field.points.insertPointFast(p.x, p.y, 0);
 }
 
 std::vector<CLoopClosureDetector::TCandidate> CLoopClosureDetector::candidates(
@@ -183,9 +189,18 @@ std::vector<TLoopClosure> CLoopClosureDetector::verifyAll(const std::vector<TCan
 	for (size_t first = 0; first < cands.size(); first += batch)
 	{
 		const size_t count = std::min(batch, cands.size() - first);
-		// the cache is only touched here: the batch's fields are its most recent ones
-		std::vector<const TSubmapField*> fields;
-		for (size_t k = 0; k < count; ++k) fields.push_back(&fieldOf(cands[first + k].submap));
+		// the cache is only touched here: the batch's fields are its most recent
+		// ones; those not cached are built side by side (each in its own buffers)
+		std::vector<TSubmapField*> fields;
+		std::vector<size_t> toBuild;
+		for (size_t k = 0; k < count; ++k)
+		{
+			bool needsBuild = false;
+			fields.push_back(cachedField(cands[first + k].submap, needsBuild));
+			if (needsBuild) toBuild.push_back(k);
+		}
+		m_pool->run(toBuild.size(),
+					[&](size_t i) { buildField(*fields[toBuild[i]], cands[first + toBuild[i]].submap); });
 		m_pool->run(count, [&](size_t k) { out[first + k] = verify(cands[first + k], *fields[k], node, graph); });
 	}
 	return out;

@@ -226,7 +226,12 @@ class CLoopClosureDetector
 	bool checkFreeSide(const TSubmapField& field, TLoopClosure& out) const;
 	bool refineWithIcp(const TSubmapField& field, TLoopClosure& out) const;
 	void closeSubmap(const CPoseGraph& graph);
-	const TSubmapField& fieldOf(size_t submap);
+	/** The submap's field from the LRU cache, made most recent; a field not
+	 * cached gets a slot (the least recently used one's buffers) and
+	 * needsBuild = true: buildField() fills it. */
+	TSubmapField* cachedField(size_t submap, bool& needsBuild);
+	/** Rasterises the submap into the field: likelihood levels, free space, ICP points. */
+	void buildField(TSubmapField& field, size_t submap) const;
 
 	TOptions m_options;
 	std::vector<TSubmap> m_submaps;
