@@ -1,12 +1,9 @@
 #include <hslam/common/CTaskPool.h>
 
-#include <algorithm>
-
 namespace hslam::common
 {
 CTaskPool::CTaskPool(size_t threads)
 {
-	if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
 	for (size_t k = 1; k < threads; ++k) m_workers.emplace_back([this] { workerLoop(); });
 }
 

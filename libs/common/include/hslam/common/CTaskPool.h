@@ -26,8 +26,9 @@ namespace hslam::common
 class CTaskPool
 {
    public:
-	/** threads = how many run tasks at once, the caller included (0: one per
-	 * hardware thread). */
+	/** threads = how many run tasks at once, the caller included (0 or 1:
+	 * none but the caller; callers choose the count, e.g. from
+	 * std::thread::hardware_concurrency()). */
 	explicit CTaskPool(size_t threads);
 	~CTaskPool();
 	CTaskPool(const CTaskPool&) = delete;
