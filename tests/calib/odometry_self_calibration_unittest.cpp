@@ -165,3 +165,54 @@ TEST(OdometrySelfCalibration, RebasingReachesTheScaleTheMatchesFixOnlyInPart)
 	c.observe(CPose2D(0, 0, 0.5), CPose2D(0, 0, 0.5));  // no distance: the fit stays at the base
 	EXPECT_NEAR(c.state().distance_scale, atRebase, 1e-12);
 }
+
+namespace
+{
+/** Feeds `n` random arcs of a robot whose odometry gains `curvature_rad_per_m`
+ * of heading per metre it does not turn (unequal wheels); the fused heading
+ * change carries `noise_rad` of noise per interval. */
+void driveCurvedArcs(COdometrySelfCalibration& c, int n, double curvature_rad_per_m, double noise_rad, unsigned seed)
+{
+	std::mt19937 rng(seed);
+	std::uniform_real_distribution<double> ds(0.2, 0.6), dphi(-0.4, 0.4);
+	std::normal_distribution<double> noise(0, noise_rad);
+	for (int i = 0; i < n; ++i)
+	{
+		const double s = ds(rng), turn = dphi(rng);
+		const CPose2D truth = arcIncrement(s, turn);
+		c.observe(arcIncrement(s, turn + curvature_rad_per_m * s), CPose2D(truth.x(), truth.y(), turn + noise(rng)));
+	}
+}
+}  // namespace
+
+TEST(OdometrySelfCalibration, AppliesTheHeadingTermsOnlyOnceTheirFitIsBeyondItsBandAndNoise)
+{
+	constexpr double kDegPerM = M_PI / 180;
+	auto o = options(true);
+	o.min_heading_significance = 3;
+	// One wheel 2 % larger (Ed = 1.02): 3.4 deg/m, found and applied.
+	COdometrySelfCalibration curved(o, 0.335);
+	driveCurvedArcs(curved, 400, 3.4 * kDegPerM, 0.2 * kDegPerM, 1);
+	EXPECT_TRUE(curved.state().heading_applied);
+	// (the 10 m prior of nominal wheels holds it 6 % short after 160 m)
+	EXPECT_NEAR(curved.state().curvature_bias_rad_per_m, -3.4 * kDegPerM, 0.3 * kDegPerM);
+	const CPose2D straight = arcIncrement(0.5, 0.0);  // the odometry claims straight: the robot turned right
+	EXPECT_NEAR(curved.correct(arcIncrement(0.5, 1.7 * kDegPerM)).phi(), 0.0, 0.15 * kDegPerM);
+	EXPECT_LT(curved.correct(straight).phi(), -1.5 * kDegPerM);
+	// 0.3 deg/m, well measured: inside the band (what nominal wheels fit), not applied.
+	COdometrySelfCalibration slight(o, 0.335);
+	driveCurvedArcs(slight, 400, 0.3 * kDegPerM, 0.05 * kDegPerM, 2);
+	EXPECT_NEAR(slight.state().curvature_bias_rad_per_m, -0.3 * kDegPerM, 0.05 * kDegPerM);
+	EXPECT_FALSE(slight.state().heading_applied);
+	EXPECT_NEAR(slight.correct(straight).phi(), 0.0, 1e-12);
+	// No bias, 3 deg of noise per interval: early fits stray beyond the band,
+	// but not beyond three standard errors; without the significance test
+	// they are applied (and stay so).
+	COdometrySelfCalibration noisy(o, 0.335);
+	driveCurvedArcs(noisy, 400, 0.0, 3.0 * kDegPerM, 3);
+	EXPECT_FALSE(noisy.state().heading_applied);
+	o.min_heading_significance = 0;
+	COdometrySelfCalibration unguarded(o, 0.335);
+	driveCurvedArcs(unguarded, 400, 0.0, 3.0 * kDegPerM, 3);
+	EXPECT_TRUE(unguarded.state().heading_applied);
+}

@@ -9,6 +9,7 @@
 #include <hslam/matching/scan_points.h>
 #include <hslam/matching/CPointIndex2D.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace hslam::matching;
@@ -69,6 +70,31 @@ TEST(IcpMatcher, TooFewPointsFail)
 	const auto match = icp.match(toPointsMap(room()), toPointsMap(few), CPose2D(), kSeedCov);
 	EXPECT_EQ(match.quality, EMatchQuality::failed);
 	EXPECT_EQ(match.method, "icp");
+}
+
+TEST(IcpMatcher, AFewPointsPairingPerfectlyMakeAWeakMatchAtBest)
+{
+	// A short-range scanner in an open hall sees a pillar or two: every point
+	// pairs (goodness 1), in many places at once. Fewer paired points than
+	// min_good_points make a weak match however well they pair; the same
+	// view with enough points is good. The room of the tests above, seen
+	// from where it is, by its 40 points nearest the robot and by all.
+	const TRoomView view;
+	std::vector<TPoint2D> near = view.scan;
+	std::sort(near.begin(), near.end(), [](const TPoint2D& a, const TPoint2D& b) { return a.norm() < b.norm(); });
+	near.resize(40);
+	CIcpMatcher::TOptions o;
+	o.engine = "cached";
+	const CPose2D truth(0.3, -0.2, 0);
+	const auto few = CIcpMatcher(o).match(view.index, toPointsMap(near), truth, kSeedCov);
+	EXPECT_GT(few.score, 0.95);
+	EXPECT_EQ(few.correspondences, 40u);
+	EXPECT_EQ(few.quality, EMatchQuality::weak);
+	const auto all = CIcpMatcher(o).match(view.index, toPointsMap(view.scan), truth, kSeedCov);
+	EXPECT_GT(all.correspondences, 100u);
+	EXPECT_EQ(all.quality, EMatchQuality::good);
+	o.min_good_points = 0;  // by goodness only
+	EXPECT_EQ(CIcpMatcher(o).match(view.index, toPointsMap(near), truth, kSeedCov).quality, EMatchQuality::good);
 }
 
 TEST(IcpCovariance, CorridorIsUnconstrainedAlongItsAxis)

@@ -35,7 +35,8 @@ void printOdometryCalibration(const calib::COdometrySelfCalibration& calibration
 		<< st.heading_scale << ", curvature " << st.curvature_bias_rad_per_m * 180.0 / M_PI
 		<< " deg/m = c_L " << st.correction.left_factor << ", c_R " << st.correction.right_factor << ", Eb "
 		<< st.correction.wheelbase_ratio
-		<< (st.correction.enabled ? " (applied)" : " (not applied: within the front-end's own bias)") << "\n";
+		<< (st.distance_applied ? "; distance applied" : "; distance not applied (within the front-end's own bias)")
+		<< (st.heading_applied ? "; heading applied" : "") << "\n";
 }
 /** The odometry time offset in use and its fit ([odometry_timing]). */
 void printOdometryTiming(const slam::CMappingPipeline& pipeline, std::ostream& out)

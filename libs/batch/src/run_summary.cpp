@@ -4,6 +4,8 @@
 #include <hslam/eval/evaluation_json.h>
 #include <hslam/batch/run_summary.h>
 
+#include <cmath>
+
 #include <fstream>
 #include <set>
 #include <stdexcept>
@@ -75,7 +77,10 @@ TRunSummary summarizeRun(const slam::CMappingPipeline& pipeline, const TBatchReq
 	countMatches(pipeline, s);
 	countTracks(pipeline, s);
 	s.odometry_distance_scale = pipeline.odometryCalibration().state().distance_scale;
-	s.odometry_scale_applied = pipeline.odometryCalibration().state().correction.enabled;
+	s.odometry_scale_applied = pipeline.odometryCalibration().state().distance_applied;
+	s.odometry_heading_scale = pipeline.odometryCalibration().state().heading_scale;
+	s.odometry_curvature_deg_per_m = pipeline.odometryCalibration().state().curvature_bias_rad_per_m * 180.0 / M_PI;
+	s.odometry_heading_applied = pipeline.odometryCalibration().state().heading_applied;
 	s.odometry_time_offset_s = pipeline.odometryOffsetInUse_s();
 	if (const auto fit = pipeline.odometryTimeOffset().estimate(s.odometry_time_offset_s))
 		s.odometry_time_offset_fit_s = fit->offset_s;
@@ -111,6 +116,9 @@ std::string runSummaryToJson(const TRunSummary& s)
 		{"person_tracks", std::to_string(s.person_tracks)},
 		{"odometry_distance_scale", jsonNumber(s.odometry_distance_scale, "%.5f")},
 		{"odometry_scale_applied", s.odometry_scale_applied ? "true" : "false"},
+		{"odometry_heading_scale", jsonNumber(s.odometry_heading_scale, "%.5f")},
+		{"odometry_curvature_deg_per_m", jsonNumber(s.odometry_curvature_deg_per_m, "%.4f")},
+		{"odometry_heading_applied", s.odometry_heading_applied ? "true" : "false"},
 		{"odometry_time_offset_s", jsonNumber(s.odometry_time_offset_s, "%.3f")},
 		{"odometry_time_offset_fit_s",
 		 s.odometry_time_offset_fit_s ? jsonNumber(*s.odometry_time_offset_fit_s, "%.3f") : "null"},

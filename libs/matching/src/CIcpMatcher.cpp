@@ -222,6 +222,9 @@ TPoseMatch CIcpMatcher::withQuality(TPoseMatch result) const
 	result.quality = result.score < m_options.fail_goodness  ? EMatchQuality::failed
 					 : result.score < m_options.min_goodness ? EMatchQuality::weak
 															 : EMatchQuality::good;
+	if (result.quality == EMatchQuality::good &&
+		result.correspondences < static_cast<size_t>(m_options.min_good_points))
+		result.quality = EMatchQuality::weak;
 	return result;
 }
 

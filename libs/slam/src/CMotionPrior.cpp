@@ -75,8 +75,7 @@ bool CMotionPrior::odometryStalled(double t_s) const
 void CMotionPrior::observeMatch(const mrpt::poses::CPose2D& measured, const Eigen::Matrix3d& covariance,
 								bool accepted, double nis, double t_s)
 {
-	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(covariance.topLeftCorner<2, 2>());
-	if (!(eig.eigenvalues().maxCoeff() <= m_options.measured_max_std_m * m_options.measured_max_std_m)) return;
+	if (!constrainsTranslation(covariance)) return;
 	const bool contradicted = !accepted || (m_options.contradicting_nis > 0 && nis > m_options.contradicting_nis);
 	m_rejectedInARow = contradicted ? m_rejectedInARow + 1 : 0;
 	if (m_havePreviousMatch && t_s - m_previousMatch_s >= m_options.min_interval_s &&
@@ -86,6 +85,12 @@ void CMotionPrior::observeMatch(const mrpt::poses::CPose2D& measured, const Eige
 		m_measuredVelocity_s = t_s;
 	}
 	m_previousMatch = measured, m_previousMatch_s = t_s, m_havePreviousMatch = true;
+}
+
+bool CMotionPrior::constrainsTranslation(const Eigen::Matrix3d& covariance) const
+{
+	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(covariance.topLeftCorner<2, 2>());
+	return eig.eigenvalues().maxCoeff() <= m_options.measured_max_std_m * m_options.measured_max_std_m;
 }
 
 std::optional<mrpt::poses::CPose2D> CMotionPrior::contradictedMatchSeed(double t_s) const

@@ -33,6 +33,9 @@ struct TRunSummary
 	size_t matches = 0, matches_failed = 0, matches_rejected = 0;
 	double odometry_distance_scale = 1;  //!< fitted by [odometry_self_calibration]
 	bool odometry_scale_applied = false;  //!< the fit corrected the odometry
+	double odometry_heading_scale = 1;  //!< fitted heading scale (1 / Eb); 1 unless estimate_heading
+	double odometry_curvature_deg_per_m = 0;  //!< fitted heading gained per metre (Ed); 0 unless estimate_heading
+	bool odometry_heading_applied = false;  //!< the heading terms corrected the odometry
 	double odometry_time_offset_s = 0;  //!< [odometry_timing] offset in use at the end
 	std::optional<double> odometry_time_offset_fit_s;  //!< its fit (none before a pair was scored)
 	double wall_s = 0;

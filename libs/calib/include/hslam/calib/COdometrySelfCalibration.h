@@ -47,7 +47,7 @@ namespace hslam::calib
 struct TOdometrySelfCalibration
 {
 	bool enabled = true;
-	bool estimate_heading = false;  //!< also fit b and c (UMBmark heading terms); measured worse, see docs
+	bool estimate_heading = true;  //!< also fit b and c (UMBmark heading terms); see the INI and docs
 	double prior_travel_m = 10.0;  //!< weight of the nominal calibration, in metres of travel
 	double max_scale_error = 0.1;  //!< factors stay within 1 +- this (TOdometryCorrection's range)
 	/** The correction is applied only once the fitted distance scale has
@@ -58,6 +58,15 @@ struct TOdometrySelfCalibration
 	 * applied it feeds back to 0.987-0.993 and makes them worse; the fit
 	 * cannot tell an odometry error that small from that bias. */
 	double min_scale_error = 0.01;
+	/** estimate_heading: the heading terms are applied only once the fitted
+	 * heading scale has left 1 +- min_heading_scale_error or the curvature
+	 * exceeds min_curvature_rad_per_m (and stay applied after). */
+	double min_heading_scale_error = 0.01;
+	double min_curvature_rad_per_m = 0.5 * M_PI / 180.0;
+	/** ...and by more than this many of its standard errors (from the
+	 * fit's residuals): early in a run, with noisy odometry, a few intervals
+	 * fit a curvature that is not there. */
+	double min_heading_significance = 1.0;
 	double max_interval_m = 2.0;  //!< longer intervals (after failed matches) are not used
 	double max_distance_residual = 0.25;  //!< |m| - a|o| beyond this fraction of |o| (+ 2 cm): outlier
 	double max_heading_residual_rad = 5.0 * M_PI / 180.0;  //!< heading disagreement beyond this: outlier
@@ -73,6 +82,9 @@ struct TOdometrySelfCalibration
 		v.real("prior_travel_m", prior_travel_m, 0.1, 1e6);
 		v.real("max_scale_error", max_scale_error, 0.0, 0.1);
 		v.real("min_scale_error", min_scale_error, 0.0, 0.1);
+		v.real("min_heading_scale_error", min_heading_scale_error, 0.0, 0.1);
+		v.degrees("min_curvature_deg_per_m", min_curvature_rad_per_m, 0.0, 45.0);
+		v.real("min_heading_significance", min_heading_significance, 0.0, 100.0);
 		v.real("max_interval_m", max_interval_m, 0.05, 100.0);
 		v.real("max_distance_residual", max_distance_residual, 0.01, 10.0);
 		v.degrees("max_heading_residual_deg", max_heading_residual_rad, 0.1, 180.0);
@@ -89,6 +101,12 @@ struct TOdometrySelfCalibrationState
 	double travel_m = 0.0;  //!< odometric distance of the intervals used
 	size_t intervals = 0, outliers = 0;
 	size_t rebases = 0;  //!< times the distance fit restarted from the scale reached
+	/** The heading terms (b, c) are part of `correction`: estimate_heading,
+	 * and the fit has left the band of min_heading_* (and stays applied). */
+	bool heading_applied = false;
+	/** The distance scale is part of `correction`: it has left 1 +-
+	 * min_scale_error (and stays applied). */
+	bool distance_applied = false;
 	/** The same as c_L, c_R, Eb; enabled (applied) once the distance scale
 	 * has left 1 +- min_scale_error. */
 	TOdometryCorrection correction;
@@ -113,6 +131,9 @@ class COdometrySelfCalibration
 
    private:
 	void refit();
+	/** The heading terms b and c (when estimate_heading), and whether they
+	 * are now applied. */
+	void fitHeading();
 
 	TOdometrySelfCalibration m_opts;
 	double m_wheelbase_m = 0.335;
@@ -122,7 +143,7 @@ class COdometrySelfCalibration
 	// of the 2x2 heading fit.
 	double m_baseScale = 1.0, m_travelSinceRebase_m = 0.0;
 	double m_sumMatchedDistance = 0, m_sumOdometryDistance = 0;
-	double m_hh = 0, m_hs = 0, m_ss = 0, m_hy = 0, m_sy = 0;
+	double m_hh = 0, m_hs = 0, m_ss = 0, m_hy = 0, m_sy = 0, m_yy = 0;
 	TOdometrySelfCalibrationState m_state;
 };
 

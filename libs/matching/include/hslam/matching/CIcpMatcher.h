@@ -60,6 +60,11 @@ class CIcpMatcher
 		int decimation = 1;  //!< use every k-th point of the scan (MRPT corresponding_points_decimation)
 		double min_goodness = 0.5;  //!< below: weak match (fraction of points paired at the end)
 		double fail_goodness = 0.2;  //!< below: failed
+		/** A match pairing fewer scan points than this is weak at best, however
+		 * large its goodness: a handful of returns (a short-range scanner in an
+		 * open hall: two pillars and a crate corner) pair "all" their points in
+		 * many places. 0 = by goodness only. */
+		int min_good_points = 50;
 		double restart_below_goodness = 0.7;  //!< multi-start when the first goodness is lower; 0 = never
 		/** ...or when its fit (seed_fit_sigma_m) is lower; 0 = by goodness only. */
 		double restart_below_fit = 0.7;
@@ -116,6 +121,7 @@ class CIcpMatcher
 			v.integer("decimation", decimation, 1, 100);
 			v.real("min_goodness", min_goodness, 0.0, 1.0);
 			v.real("fail_goodness", fail_goodness, 0.0, 1.0);
+			v.integer("min_good_points", min_good_points, 0, 100000);
 			v.real("restart_below_goodness", restart_below_goodness, 0.0, 1.0);
 			v.real("restart_below_fit", restart_below_fit, 0.0, 1.0);
 			v.integer("point_to_line_steps", point_to_line_steps, 0, 50);

@@ -116,6 +116,9 @@ class CMotionPrior
 	 * the axis). */
 	void observeMatch(const mrpt::poses::CPose2D& measured, const Eigen::Matrix3d& covariance, bool accepted,
 					  double nis, double t_s);
+	/** Whether a match of this covariance (x m, y m, theta rad) constrains
+	 * the translation in every direction (std <= measured_max_std_m). */
+	bool constrainsTranslation(const Eigen::Matrix3d& covariance) const;
 	/** While the filter contradicts the well-constrained matches (the last
 	 * one rejected, or accepted above contradicting_nis): where the last of
 	 * them puts the robot at `t_s`, moved on at velocity(); a seed for the
