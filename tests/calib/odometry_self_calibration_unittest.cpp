@@ -4,6 +4,7 @@
 #include <hslam/calib/COdometrySelfCalibration.h>
 
 #include <cmath>
+#include <iostream>
 #include <random>
 
 using namespace hslam::calib;
@@ -215,4 +216,35 @@ TEST(OdometrySelfCalibration, AppliesTheHeadingTermsOnlyOnceTheirFitIsBeyondItsB
 	COdometrySelfCalibration unguarded(o, 0.335);
 	driveCurvedArcs(unguarded, 400, 0.0, 3.0 * kDegPerM, 3);
 	EXPECT_TRUE(unguarded.state().heading_applied);
+}
+
+TEST(OdometrySelfCalibration, ScaleSignificanceWaitsForEvidenceBeyondTheNoise)
+{
+	// The odometry is 1.5 % long, each fused distance carries 3 cm of noise.
+	// With the 1 % band alone the scale is applied as soon as the fit first
+	// crosses it; asking for two standard errors waits until the intervals
+	// pin the scale down, and then applies it all the same.
+	auto o = options();
+	o.min_scale_error = 0.01;
+	COdometrySelfCalibration bandOnly(o, 0.335);
+	o.min_scale_significance = 2;
+	COdometrySelfCalibration significant(o, 0.335);
+	std::mt19937 rng(5);
+	std::normal_distribution<double> noise(0, 0.03);
+	size_t firstBandOnly = 0, firstSignificant = 0;
+	for (size_t i = 1; i <= 3000; ++i)
+	{
+		const double matched = 0.5 / 1.015 + noise(rng);
+		bandOnly.observe(CPose2D(0.5, 0, 0), CPose2D(matched, 0, 0));
+		significant.observe(CPose2D(0.5, 0, 0), CPose2D(matched, 0, 0));
+		if (!firstBandOnly && bandOnly.state().distance_applied) firstBandOnly = i;
+		if (!firstSignificant && significant.state().distance_applied) firstSignificant = i;
+	}
+	std::cout << "applied after " << firstBandOnly << " intervals (band alone), " << firstSignificant
+			  << " (two standard errors)\n";
+	ASSERT_GT(firstBandOnly, 0u);
+	ASSERT_GT(firstSignificant, 0u);
+	EXPECT_LT(firstBandOnly, 50u);  // measured 6
+	EXPECT_GT(firstSignificant, 100u);  // measured 229
+	EXPECT_NEAR(significant.state().distance_scale, 1 / 1.015, 0.003);
 }

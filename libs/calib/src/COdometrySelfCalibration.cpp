@@ -46,6 +46,8 @@ void COdometrySelfCalibration::observe(const mrpt::poses::CPose2D& odometry, con
 	const double based = m_baseScale * s;
 	m_sumMatchedDistance += w * matched * based;
 	m_sumOdometryDistance += w * based * based;
+	m_sumMatchedSquared += w * matched * matched;
+	++m_intervalsSinceRebase;
 	m_travelSinceRebase_m += std::abs(s);
 	m_hh += w * turn * turn, m_hs += w * turn * s, m_ss += w * s * s;
 	m_hy += w * turn * y, m_sy += w * s * y, m_yy += w * y * y;
@@ -53,6 +55,16 @@ void COdometrySelfCalibration::observe(const mrpt::poses::CPose2D& odometry, con
 	++m_state.intervals;
 	refit();
 	rebaseIfDue();
+}
+
+double COdometrySelfCalibration::distanceScaleError() const
+{
+	const double P = m_opts.prior_travel_m;
+	const double a = (m_sumMatchedDistance + P) / (m_sumOdometryDistance + P);  // relative to the base scale
+	const double ssr =
+		std::max(0.0, m_sumMatchedSquared - 2 * a * m_sumMatchedDistance + a * a * m_sumOdometryDistance);
+	const double sigma2 = ssr / std::max<double>(1.0, static_cast<double>(m_intervalsSinceRebase) - 1.0);
+	return m_baseScale * std::sqrt(sigma2 / (m_sumOdometryDistance + P));
 }
 
 void COdometrySelfCalibration::fitHeading()
@@ -84,7 +96,8 @@ void COdometrySelfCalibration::rebaseIfDue()
 	// the prior now holds the fit at the scale reached (continuous: the
 	// scale is unchanged until new intervals arrive)
 	m_baseScale = m_state.distance_scale;
-	m_sumMatchedDistance = m_sumOdometryDistance = 0;
+	m_sumMatchedDistance = m_sumOdometryDistance = m_sumMatchedSquared = 0;
+	m_intervalsSinceRebase = 0;
 	m_travelSinceRebase_m = 0;
 	++m_state.rebases;
 }
@@ -101,7 +114,8 @@ void COdometrySelfCalibration::refit()
 	// dphi' = (a / Eb) dphi + (2 d / (Eb b)) ds, so Eb = a / b_fit and
 	// d = c Eb b / 2.
 	// Each part is applied once its fit leaves its band, and stays so.
-	if (std::abs(st.distance_scale - 1.0) > m_opts.min_scale_error) st.distance_applied = true;
+	if (std::abs(st.distance_scale - 1.0) > std::max(m_opts.min_scale_error, m_opts.min_scale_significance * distanceScaleError()))
+		st.distance_applied = true;
 	const double a = st.distance_applied ? st.distance_scale : 1.0;
 	const double b = st.heading_applied ? st.heading_scale : 1.0;
 	const double c = st.heading_applied ? st.curvature_bias_rad_per_m : 0.0;

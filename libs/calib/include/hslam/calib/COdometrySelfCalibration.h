@@ -58,14 +58,19 @@ struct TOdometrySelfCalibration
 	 * applied it feeds back to 0.987-0.993 and makes them worse; the fit
 	 * cannot tell an odometry error that small from that bias. */
 	double min_scale_error = 0.01;
+	/** ...and by more than this many of its standard errors (from the fit's
+	 * residuals): early in a run the front-end's own distance bias (a far-
+	 * reaching scanner's grazing points) can look like an odometry error. */
+	double min_scale_significance = 0.0;
 	/** estimate_heading: the heading terms are applied only once the fitted
 	 * heading scale has left 1 +- min_heading_scale_error or the curvature
 	 * exceeds min_curvature_rad_per_m (and stay applied after). */
 	double min_heading_scale_error = 0.01;
 	double min_curvature_rad_per_m = 0.5 * M_PI / 180.0;
-	/** ...and by more than this many of its standard errors (from the
-	 * fit's residuals): early in a run, with noisy odometry, a few intervals
-	 * fit a curvature that is not there. */
+	/** The heading terms must also depart from nominal by more than this
+	 * many of their standard errors (from the fit's residuals): early in a
+	 * run, with noisy odometry, a few intervals fit a curvature that is not
+	 * there. */
 	double min_heading_significance = 1.0;
 	double max_interval_m = 2.0;  //!< longer intervals (after failed matches) are not used
 	double max_distance_residual = 0.25;  //!< |m| - a|o| beyond this fraction of |o| (+ 2 cm): outlier
@@ -85,6 +90,7 @@ struct TOdometrySelfCalibration
 		v.real("min_heading_scale_error", min_heading_scale_error, 0.0, 0.1);
 		v.degrees("min_curvature_deg_per_m", min_curvature_rad_per_m, 0.0, 45.0);
 		v.real("min_heading_significance", min_heading_significance, 0.0, 100.0);
+		v.real("min_scale_significance", min_scale_significance, 0.0, 100.0);
 		v.real("max_interval_m", max_interval_m, 0.05, 100.0);
 		v.real("max_distance_residual", max_distance_residual, 0.01, 10.0);
 		v.degrees("max_heading_residual_deg", max_heading_residual_rad, 0.1, 180.0);
@@ -134,6 +140,8 @@ class COdometrySelfCalibration
 	/** The heading terms b and c (when estimate_heading), and whether they
 	 * are now applied. */
 	void fitHeading();
+	/** Standard error of the distance scale, from the fit's residuals. */
+	double distanceScaleError() const;
 
 	TOdometrySelfCalibration m_opts;
 	double m_wheelbase_m = 0.335;
@@ -142,7 +150,8 @@ class COdometrySelfCalibration
 	// Weighted sums of the distance fit (odometry scaled by m_baseScale) and
 	// of the 2x2 heading fit.
 	double m_baseScale = 1.0, m_travelSinceRebase_m = 0.0;
-	double m_sumMatchedDistance = 0, m_sumOdometryDistance = 0;
+	double m_sumMatchedDistance = 0, m_sumOdometryDistance = 0, m_sumMatchedSquared = 0;
+	size_t m_intervalsSinceRebase = 0;
 	double m_hh = 0, m_hs = 0, m_ss = 0, m_hy = 0, m_sy = 0, m_yy = 0;
 	TOdometrySelfCalibrationState m_state;
 };

@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# stress-matrix.sh OUT [hslam-process options...]
+#
+# The front-end on buildings nobody tuned it on, reproduced in simulation:
+# every world of WORLDS (config_ini/sim-<world>.ini) is simulated once per
+# variant of VARIANTS (a sensor, a robot or a driving style unlike the
+# samples'), processed with the default pipeline and scored against its
+# ground truth and against its own dead reckoning. Prints one line per run
+# and writes OUT/matrix.csv; a run worse than odometry is flagged WORSE
+# (issue 12: the estimate is never worse than raw odometry).
+#
+# Variants:
+#   base      the world's INI as it is
+#   urg       Hokuyo URG-04LX: 240 deg, 0.36 deg, 5.6 m, 10 Hz
+#   lms100    SICK LMS100: 270 deg, 0.5 deg, 20 m
+#   far       the LMS200 with a 30 m range (the samples' 8 m)
+#   slowscan  1 scan per second (csail's spacing); fastscan: 20 per second
+#   wbias     wheelbase 4 % off (UMBmark Eb = 1.04: turns over-reported)
+#   dbias     one wheel 2 % larger (Ed = 1.02: 3.4 deg per metre of curve)
+#   noisy     odometry noise ten times the samples'
+#   fast      1.2 m/s and 100 deg/s
+#
+#   scripts/stress-matrix.sh out/stress
+#   WORLDS="open-hall" VARIANTS="urg" scripts/stress-matrix.sh out/hall --set icp.min_good_points=0
+set -euo pipefail
+[ $# -ge 1 ] || { sed -n 2,24p "$0"; exit 2; }
+out=$1; shift
+here=$(cd "$(dirname "$0")/.." && pwd)
+bin=${HSLAM_BIN:-$here/build/bin}
+worlds=${WORLDS:-floor corridor long-corridor open-hall lab floor-laps}
+variants=${VARIANTS:-base urg lms100 far slowscan fastscan wbias dbias noisy fast}
+
+variantSettings() {
+	case $1 in
+		base) ;;
+		urg) echo "--set laser.preset=custom --set laser.fov_deg=240 --set laser.resolution_deg=0.36 --set laser.max_range_m=5.6 --set laser.rate_hz=10" ;;
+		lms100) echo "--set laser.preset=lms100" ;;
+		far) echo "--set laser.max_range_m=30" ;;
+		slowscan) echo "--set laser.rate_hz=1" ;;
+		fastscan) echo "--set laser.rate_hz=20" ;;
+		wbias) echo "--set robot.eb_wheelbase_ratio=1.04" ;;
+		dbias) echo "--set robot.ed_wheel_diameter_ratio=1.02" ;;
+		noisy) echo "--set robot.wheel_noise_m_per_sqrt_m=0.01 --set robot.rotation_noise_rad_per_sqrt_rad=0.03" ;;
+		fast) echo "--set path.cruise_speed_mps=1.2 --set path.turn_rate_deg_s=100" ;;
+		*) echo "stress-matrix: unknown variant '$1'" >&2; return 2 ;;
+	esac
+}
+
+mkdir -p "$out"
+echo "world,variant,ate_m,odometry_ate_m,rpe5_m,odometry_rpe5_m,scans" > "$out/matrix.csv"
+for world in $worlds; do
+	[ -f "$here/config_ini/sim-$world.ini" ] || { echo "stress-matrix: no config_ini/sim-$world.ini" >&2; exit 2; }
+	for variant in $variants; do
+		settings=$(variantSettings "$variant")
+		run=$out/$world-$variant
+		rm -rf "$run" && mkdir -p "$run"
+		# shellcheck disable=SC2086  # the settings are words
+		"$bin/hslam-simulate" -q -c "$here/config_ini/sim-$world.ini" -o "$run/sim" $settings > "$run/simulate.log" 2>&1 ||
+			{ echo "stress-matrix: simulating $world/$variant failed, see $run/simulate.log" >&2; exit 1; }
+		"$bin/hslam-process" -c "$here/config_ini/hslam-default.ini" -i "$run/sim/sim.rawlog" -o "$run/run" \
+			--ground-truth "$run/sim/ground_truth.tum" -q --overwrite --set output.write_tiles=false "$@" > "$run/process.log" 2>&1 ||
+			{ echo "stress-matrix: processing $world/$variant failed, see $run/process.log" >&2; exit 1; }
+		"$bin/hslam-evaluate" "$run/sim/ground_truth.tum" "$run/sim/odometry.tum" --json "$run/odometry.json" > /dev/null
+		python3 - "$run" "$world" "$variant" "$out/matrix.csv" <<'PY'
+import json, sys
+run, world, variant, csv = sys.argv[1:5]
+est = json.load(open(run + '/run/evaluation.json'))
+odo = json.load(open(run + '/odometry.json'))
+row = (est['ate_rmse_m'], odo['ate_rmse_m'], est['rpe_5m_trans_rmse_m'], odo['rpe_5m_trans_rmse_m'])
+flag = '  WORSE than odometry' if row[0] >= row[1] else ''
+print('%-14s %-9s ate_m=%.3f odometry_ate_m=%.3f rpe5_m=%.3f odometry_rpe5_m=%.3f%s' % ((world, variant) + row + (flag,)))
+open(csv, 'a').write('%s,%s,%.4f,%.4f,%.4f,%.4f,%d\n' % ((world, variant) + row + (est['matched'],)))
+PY
+	done
+done
