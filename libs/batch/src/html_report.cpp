@@ -50,6 +50,9 @@ void writeSummaryTable(std::ostream& h, const TRunSummary& s)
 	  << figureRow("TBF sonar corners", "sonar_corners", std::to_string(s.sonar_corners))
 	  << figureRow("odometry distance scale (self-calibration)", "odometry_distance_scale",
 				   number(s.odometry_distance_scale, "%.4f") + (s.odometry_scale_applied ? ", applied" : ", not applied"))
+	  << figureRow("odometry turn scale, curvature deg/m (self-calibration)", "odometry_curvature_deg_per_m",
+				   number(s.odometry_heading_scale, "%.4f") + ", " + number(s.odometry_curvature_deg_per_m, "%.3f") +
+					   (s.odometry_heading_applied ? ", applied" : ", not applied"))
 	  << figureRow("odometry time offset in use, s (fit)", "odometry_time_offset_s",
 				   number(s.odometry_time_offset_s, "%.3f") + " (" +
 					   (s.odometry_time_offset_fit_s ? number(*s.odometry_time_offset_fit_s, "%.3f") : "none") + ")");

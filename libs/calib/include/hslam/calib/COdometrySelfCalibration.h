@@ -111,10 +111,10 @@ struct TOdometrySelfCalibrationState
 	 * and the fit has left the band of min_heading_* (and stays applied). */
 	bool heading_applied = false;
 	/** The distance scale is part of `correction`: it has left 1 +-
-	 * min_scale_error (and stays applied). */
+	 * min_scale_error by min_scale_significance standard errors (and stays
+	 * applied). */
 	bool distance_applied = false;
-	/** The same as c_L, c_R, Eb; enabled (applied) once the distance scale
-	 * has left 1 +- min_scale_error. */
+	/** The applied parts as c_L, c_R, Eb; enabled once either part is. */
 	TOdometryCorrection correction;
 };
 
