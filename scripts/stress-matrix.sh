@@ -19,6 +19,9 @@
 #   dbias     one wheel 2 % larger (Ed = 1.02: 3.4 deg per metre of curve)
 #   noisy     odometry noise ten times the samples'
 #   fast      1.2 m/s and 100 deg/s
+#   freeze    odometry readings frozen for 10 s from t = 30 s; drop: missing
+#   lag       every odometry reading 0.3 s old
+#   creep     odometry reports 1 % of the wheel motion all run (laser only)
 #   mount     the laser 0.25 m ahead, 0.05 m left, turned 3 deg (not in VARIANTS
 #             by default: the rawlog's sensor pose says so, as a grabber's would)
 #
@@ -30,7 +33,7 @@ out=$1; shift
 here=$(cd "$(dirname "$0")/.." && pwd)
 bin=${HSLAM_BIN:-$here/build/bin}
 worlds=${WORLDS:-floor corridor long-corridor open-hall lab floor-laps}
-variants=${VARIANTS:-base urg lms100 far slowscan fastscan wbias dbias noisy fast}
+variants=${VARIANTS:-base urg lms100 far slowscan fastscan wbias dbias noisy fast freeze drop lag creep}
 
 variantSettings() {
 	case $1 in
@@ -44,6 +47,10 @@ variantSettings() {
 		dbias) echo "--set robot.ed_wheel_diameter_ratio=1.02" ;;
 		noisy) echo "--set robot.wheel_noise_m_per_sqrt_m=0.01 --set robot.rotation_noise_rad_per_sqrt_rad=0.03" ;;
 		fast) echo "--set path.cruise_speed_mps=1.2 --set path.turn_rate_deg_s=100" ;;
+		freeze) echo "--set odometry.fault=freeze --set odometry.fault_start_s=30 --set odometry.fault_duration_s=10" ;;
+		drop) echo "--set odometry.fault=drop --set odometry.fault_start_s=30 --set odometry.fault_duration_s=10" ;;
+		lag) echo "--set odometry.fault=lag --set odometry.fault_lag_s=0.3" ;;
+		creep) echo "--set odometry.fault=freeze --set odometry.fault_motion_scale=0.01" ;;
 		mount) echo "--set laser.x_m=0.25 --set laser.y_m=0.05 --set laser.yaw_deg=3" ;;
 		*) echo "stress-matrix: unknown variant '$1'" >&2; return 2 ;;
 	esac

@@ -38,20 +38,53 @@ Eigen::Vector3d CMotionPrior::possibleVelocity(const mrpt::poses::CPose2D& d, do
 	return v;
 }
 
+void CMotionPrior::noteZeroRun(const TOdometryIncrement& increment, double dt_s)
+{
+	if (m_zeroIncrements == 0)
+	{
+		m_velocityBeforeZeros.reset();
+		m_lastOdometrySpeed_mps = increment.delta.norm() / std::max(dt_s, m_options.min_interval_s);
+	}
+	else if (m_zeroIncrements == 1 && m_options.max_decel_mps2 > 0 &&
+			 m_lastOdometrySpeed_mps > m_options.max_decel_mps2 * dt_s)
+		m_velocityBeforeZeros = m_velocity;  // the estimates up to the scan before the first zero
+}
+
 TMotionPrior CMotionPrior::prior(const TOdometryIncrement& increment, double t_s)
 {
 	const double dt = m_haveScan ? std::clamp(t_s - m_lastScan_s, 0.0, 10.0) : 0.0;
 	m_lastScan_s = t_s, m_haveScan = true;
 	m_lastOdometry = increment.known ? increment.delta : mrpt::poses::CPose2D();
 	m_lastOdometryKnown = increment.known;
+	TMotionPrior p = choose(increment, dt, t_s);
+	if (p.source == TMotionPrior::ESource::odometry) m_faultAtSpeed = false;
+	p.velocity_measured = p.source != TMotionPrior::ESource::odometry && m_faultAtSpeed;
+	return p;
+}
+
+TMotionPrior CMotionPrior::choose(const TOdometryIncrement& increment, double dt, double t_s)
+{
 	if (!increment.known)
 	{
+		// odometry lost while the last reading moved faster than any stop explains
+		if (m_zeroIncrements == 0 && !m_inGap && m_options.max_decel_mps2 > 0 &&
+			m_lastOdometrySpeed_mps > m_options.max_decel_mps2 * dt)
+			m_faultAtSpeed = true;
+		m_inGap = true;
 		m_zeroIncrements = 0;
 		return constantVelocity(dt, "gap");
 	}
+	m_inGap = false;
 	const bool zero = increment.delta.norm() == 0 && increment.delta.phi() == 0;
 	m_zeroIncrements = zero ? m_zeroIncrements + 1 : 0;
-	if (m_zeroIncrements >= m_options.frozen_min_scans) return constantVelocity(dt, "frozen");
+	noteZeroRun(increment, dt);
+	if (m_zeroIncrements >= m_options.frozen_min_scans)
+	{
+		if (m_velocityBeforeZeros)
+			m_velocity = *m_velocityBeforeZeros, m_velocityBeforeZeros.reset(), m_faultAtSpeed = true;
+		return constantVelocity(dt, "frozen");
+	}
+	m_faultAtSpeed = false;  // a jump or a stall: what the velocity says is in doubt
 	if (isJump(increment.delta, dt)) return constantVelocity(dt, "jump");
 	m_stalled = odometryStalled(t_s);
 	if (m_stalled) return constantVelocity(dt, "stalled");

@@ -57,6 +57,12 @@ struct TMotionPrior
 		constant_velocity
 	} source = ESource::odometry;
 	std::string reason;  //!< "", "gap", "frozen", "stalled", "jump"
+	/** A constant-velocity prior whose velocity was measured on trusted
+	 * odometry: the readings froze or stopped coming while the robot moved
+	 * faster than any stop explains ([motion_prior] max_decel_mps2), so the
+	 * robot still moves at that velocity; matching need not measure a
+	 * direction the scan leaves loose. */
+	bool velocity_measured = false;
 };
 
 class CMotionPrior
@@ -79,6 +85,11 @@ class CMotionPrior
 		int rejected_matches_for_stall = 3;  //!< see file comment ("stalled")
 		double contradicting_nis = 16.27;  //!< an accepted match above this NIS counts as rejected (0 = off)
 		double min_interval_s = 0.25;  //!< speeds are judged over at least this interval (see file comment)
+		/** Odometry that drops to exact zeros from a speed no robot could
+		 * shed in one scan interval at this deceleration froze while moving:
+		 * the constant velocity is the one from before the zeros (the
+		 * estimates of the zeros' first scans followed them). 0 = off. */
+		double max_decel_mps2 = 2.0;
 
 		template <class V>
 		void visit(V& v)
@@ -98,6 +109,7 @@ class CMotionPrior
 			v.integer("rejected_matches_for_stall", rejected_matches_for_stall, 1, 1000);
 			v.real("contradicting_nis", contradicting_nis, 0.0, 1e6);
 			v.real("min_interval_s", min_interval_s, 0.0, 10.0);
+			v.real("max_decel_mps2", max_decel_mps2, 0.0, 100.0);
 		}
 	};
 
@@ -135,6 +147,10 @@ class CMotionPrior
 
    private:
 	TMotionPrior constantVelocity(double dt_s, const std::string& reason) const;
+	/** Bookkeeping of a run of zero increments (max_decel_mps2). */
+	void noteZeroRun(const TOdometryIncrement& increment, double dt_s);
+	/** prior() without the bookkeeping of velocity_measured. */
+	TMotionPrior choose(const TOdometryIncrement& increment, double dt_s, double t_s);
 	bool isJump(const mrpt::poses::CPose2D& delta, double dt_s) const;
 	/** Whether the intervals within disagreement_window_s before t_s say
 	 * that odometry is stalled (file comment). */
@@ -165,6 +181,12 @@ class CMotionPrior
 
 	TOptions m_options;
 	int m_zeroIncrements = 0;
+	/** The velocity when the current run of zero increments began, kept when
+	 * the run began at a speed no stop explains (max_decel_mps2). */
+	std::optional<Eigen::Vector3d> m_velocityBeforeZeros;
+	double m_lastOdometrySpeed_mps = 0;  //!< of the latest non-zero increment
+	bool m_faultAtSpeed = false;  //!< the current fault began at speed (velocity_measured)
+	bool m_inGap = false;  //!< the latest increment was unknown
 	double m_lastScan_s = 0, m_lastPose_s = 0;
 	bool m_haveScan = false, m_havePose = false;
 	mrpt::poses::CPose2D m_lastPose;

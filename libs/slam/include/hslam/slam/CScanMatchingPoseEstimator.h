@@ -195,6 +195,7 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	mrpt::poses::CPose2D m_sinceMatch;  //!< odometry since the last matched scan (its robot frame)
 	mrpt::poses::CPose2D m_sinceIcp;  //!< odometry since the last ICP match
 	Eigen::Matrix3d m_sinceMatchCov = Eigen::Matrix3d::Zero();
+	bool m_gapVelocityMeasured = false;  //!< every such prior since the last match was velocity_measured
 	bool m_gapSinceMatch = false;  //!< the prior was not odometry since the last match: match (and ICP) now
 	double m_lastIcp_s = 0;  //!< time of the last ICP match
 	double m_matchTime_s = 0;  //!< time of the scan being matched
