@@ -163,3 +163,72 @@ TEST(MotionPrior, NoRefusedSeedOnceAMatchAgreesOrTheWindowHasPassed)
 	prior.observeMatch(CPose2D(2.0, 0, 0), corridor, false, 300, 1.8);
 	EXPECT_FALSE(prior.contradictedMatchSeed(1.9).has_value());
 }
+
+namespace
+{
+/** Drives at 0.8 m/s with scans every 0.2 s up to t = 2 s, then the readings
+ * drop to exact zeros for `zeros` scans while the estimates follow them (the
+ * filter believed the zeros); returns the last prior. */
+TMotionPrior zerosAfterDriving(CMotionPrior& prior, double speed_mps, int zeros)
+{
+	const double dt = 0.2;
+	double x = 0, t = 0;
+	for (int k = 0; k <= 10; ++k, t += dt, x += speed_mps * dt)
+	{
+		prior.prior(odometry(k == 0 ? 0.0 : speed_mps * dt, 0, 0), t);
+		prior.observePose(CPose2D(x, 0, 0), t);
+	}
+	x -= speed_mps * dt;
+	TMotionPrior p;
+	for (int k = 0; k < zeros; ++k, t += dt)
+	{
+		p = prior.prior(odometry(0, 0, 0), t);
+		prior.observePose(CPose2D(x, 0, 0), t);
+	}
+	return p;
+}
+}  // namespace
+
+TEST(MotionPrior, ReadingsFrozenAtSpeedKeepTheVelocityMeasuredBefore)
+{
+	// At 0.8 m/s a scan interval of 0.2 s ends at 0.4 m/s at most with
+	// max_decel_mps2 = 2: exact zeros from 0.8 m/s are a fault, not a stop.
+	// The first two zeros' estimates stood still (frozen_min_scans = 3); the
+	// frozen prior keeps 0.8 m/s, measured before them.
+	CMotionPrior atSpeed;
+	const TMotionPrior frozen = zerosAfterDriving(atSpeed, 0.8, 3);
+	EXPECT_EQ(frozen.reason, "frozen");
+	EXPECT_TRUE(frozen.velocity_measured);
+	EXPECT_NEAR(frozen.delta.x(), 0.8 * 0.2, 1e-6);
+	// Without the rule the velocity is the estimates' of the last 0.25 s at
+	// least: the zeros' standstill, and nothing says it was measured.
+	CMotionPrior::TOptions off;
+	off.max_decel_mps2 = 0;
+	CMotionPrior without(off);
+	const TMotionPrior stood = zerosAfterDriving(without, 0.8, 3);
+	EXPECT_EQ(stood.reason, "frozen");
+	EXPECT_FALSE(stood.velocity_measured);
+	EXPECT_LT(stood.delta.x(), 0.5 * frozen.delta.x());
+	// From 0.3 m/s a stop within one interval is possible: an ordinary stop.
+	CMotionPrior slow;
+	const TMotionPrior stop = zerosAfterDriving(slow, 0.3, 3);
+	EXPECT_EQ(stop.reason, "frozen");
+	EXPECT_FALSE(stop.velocity_measured);
+	// Odometry that moves again is trusted again.
+	EXPECT_FALSE(atSpeed.prior(odometry(0.16, 0, 0), 10.0).velocity_measured);
+}
+
+TEST(MotionPrior, ReadingsLostAtSpeedKeepAMeasuredVelocity)
+{
+	CMotionPrior prior;
+	zerosAfterDriving(prior, 0.8, 0);
+	TOdometryIncrement lost;
+	lost.known = false;
+	const TMotionPrior gap = prior.prior(lost, 2.2);  // one interval after the last reading
+	EXPECT_EQ(gap.reason, "gap");
+	EXPECT_TRUE(gap.velocity_measured);
+	EXPECT_NEAR(gap.delta.x(), 0.8 * 0.2, 0.01);
+	CMotionPrior slow;
+	zerosAfterDriving(slow, 0.3, 0);
+	EXPECT_FALSE(slow.prior(lost, 2.2).velocity_measured);
+}
