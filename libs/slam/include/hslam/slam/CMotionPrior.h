@@ -88,7 +88,10 @@ class CMotionPrior
 		/** Odometry that drops to exact zeros from a speed no robot could
 		 * shed in one scan interval at this deceleration froze while moving:
 		 * the constant velocity is the one from before the zeros (the
-		 * estimates of the zeros' first scans followed them). 0 = off. */
+		 * estimates of the zeros' first scans followed them), held through
+		 * the fault unless well-constrained matches re-measure it, and the
+		 * first frozen prior catches up on those scans. Readings that stop
+		 * coming at such a speed keep the velocity the same way. 0 = off. */
 		double max_decel_mps2 = 2.0;
 
 		template <class V>
@@ -151,6 +154,8 @@ class CMotionPrior
 	void noteZeroRun(const TOdometryIncrement& increment, double dt_s);
 	/** prior() without the bookkeeping of velocity_measured. */
 	TMotionPrior choose(const TOdometryIncrement& increment, double dt_s, double t_s);
+	/** The prior once zeros that began at speed are declared frozen (max_decel_mps2). */
+	TMotionPrior frozenAtSpeed(double dt_s, double t_s);
 	bool isJump(const mrpt::poses::CPose2D& delta, double dt_s) const;
 	/** Whether the intervals within disagreement_window_s before t_s say
 	 * that odometry is stalled (file comment). */
@@ -184,8 +189,10 @@ class CMotionPrior
 	/** The velocity when the current run of zero increments began, kept when
 	 * the run began at a speed no stop explains (max_decel_mps2). */
 	std::optional<Eigen::Vector3d> m_velocityBeforeZeros;
+	mrpt::poses::CPose2D m_poseBeforeZeros;  //!< the estimate at the scan before those zeros...
+	double m_poseBeforeZeros_s = 0;  //!< ...and its time
 	double m_lastOdometrySpeed_mps = 0;  //!< of the latest non-zero increment
-	bool m_faultAtSpeed = false;  //!< the current fault began at speed (velocity_measured)
+	bool m_faultAtSpeed = false;  //!< the current fault began at speed (velocity_measured; the velocity is held)
 	bool m_inGap = false;  //!< the latest increment was unknown
 	double m_lastScan_s = 0, m_lastPose_s = 0;
 	bool m_haveScan = false, m_havePose = false;
