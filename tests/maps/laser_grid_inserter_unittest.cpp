@@ -114,6 +114,22 @@ TEST(LaserGridInserter, RobotPoseAndSensorOffsetAreComposed)
 	EXPECT_EQ(grid.tileCount(), 2u);  // the robot (y = 12) is in tile row 1; the -90 deg beam ends at y = 10.5
 }
 
+TEST(LaserGridInserter, UpsideDownLaserHitsTheMirroredCells)
+{
+	// The right-hand beam (scan angle -90 deg) of a laser mounted upside down
+	// (roll 180 deg) looks to the robot's left: at 1 m on the right and 3 m
+	// on the left, its hits are those of a level laser reading 3 m and 1 m.
+	auto scan = uniformScan(2.0f);
+	scan.setScanRange(0, 1.0f), scan.setScanRange(4, 3.0f);
+	scan.sensorPose = mrpt::poses::CPose3D(0, 0, 0.3, 0, 0, M_PI);
+	CTiledOccupancyGrid grid;
+	CLaserGridInserter inserter;
+	inserter.insert(grid, kRobotAtCellCentre, scan);
+	EXPECT_GT(grid.occupancyProbability(grid.geometry().cellOf(0.05, 1.05)), 0.5);  // left, 1 m
+	EXPECT_GT(grid.occupancyProbability(grid.geometry().cellOf(0.05, -2.95)), 0.5);  // right, 3 m
+	EXPECT_LT(grid.occupancyProbability(grid.geometry().cellOf(0.05, -0.95)), 0.5);  // right, 1 m: free
+}
+
 TEST(LaserGridInserter, RaysAcrossTileBordersAndNegativeCoordinates)
 {
 	auto scan = uniformScan(2.5f);

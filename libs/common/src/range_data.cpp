@@ -19,12 +19,26 @@ std::vector<mrpt::math::TPoint2D> TRangeData::worldPoints(const mrpt::poses::CPo
 	return out;
 }
 
+TScanMount scanMount(const mrpt::poses::CPose3D& sensorPose)
+{
+	TScanMount m;
+	m.x_m = sensorPose.x(), m.y_m = sensorPose.y();
+	const auto R = sensorPose.getRotationMatrix();
+	m.upside_down = R(2, 2) < 0;
+	// level: the pose's own yaw (exactly what CPose2D(sensorPose) takes);
+	// upside down: the direction of the sensor's x axis, which a yaw / pitch
+	// / roll triple may spell either as (yaw, 0, 180) or (yaw + 180, 180, 0)
+	m.yaw_rad = m.upside_down ? std::atan2(R(1, 0), R(0, 0)) : sensorPose.yaw();
+	return m;
+}
+
 TRangeData makeRangeData(const mrpt::obs::CObservation2DRangeScan& scan)
 {
 	TRangeData d;
 	const size_t n = scan.getScanSize();
 	d.t_s = mrpt::Clock::toDouble(scan.timestamp);
-	d.sensor_pose = mrpt::poses::CPose2D(scan.sensorPose);
+	const TScanMount mount = scanMount(scan.sensorPose);
+	d.sensor_pose = mount.pose();
 	d.max_range_m = scan.maxRange;
 	if (n > 1) d.points.beam_step_rad = scan.aperture / static_cast<double>(n - 1);
 	d.bearing_rad.resize(n), d.range_m.resize(n), d.cos_bearing.resize(n), d.sin_bearing.resize(n);
@@ -33,7 +47,7 @@ TRangeData makeRangeData(const mrpt::obs::CObservation2DRangeScan& scan)
 	for (size_t b = 0; b < n; ++b)
 	{
 		const double a = scan.getScanAngle(b);  // sensor frame
-		d.bearing_rad[b] = d.sensor_pose.phi() + a;
+		d.bearing_rad[b] = mount.bearing(a);
 		d.cos_bearing[b] = std::cos(d.bearing_rad[b]);
 		d.sin_bearing[b] = std::sin(d.bearing_rad[b]);
 		d.range_m[b] = scan.getScanRange(b);
@@ -41,7 +55,7 @@ TRangeData makeRangeData(const mrpt::obs::CObservation2DRangeScan& scan)
 		if (!d.valid[b]) continue;
 		const double r = d.range_m[b];
 		mrpt::math::TPoint2D p;
-		d.sensor_pose.composePoint(r * std::cos(a), r * std::sin(a), p.x, p.y);
+		d.sensor_pose.composePoint(r * std::cos(a), mount.sine() * r * std::sin(a), p.x, p.y);
 		d.beam_point[b] = d.points.xy.size();
 		d.points.xy.push_back(p);
 		d.points.range_m.push_back(r);

@@ -1,4 +1,5 @@
 #include <hslam/dynamic/CLegDetector.h>
+#include <hslam/common/range_data.h>
 #include <hslam/dynamic/leg_features.h>
 
 #include <cmath>
@@ -114,12 +115,12 @@ double angularStep(const mrpt::obs::CObservation2DRangeScan& scan)
 double beamBearing(const mrpt::obs::CObservation2DRangeScan& scan, size_t i)
 {
 	// MRPT: beams evenly spread over the aperture, centred on the sensor x axis,
-	// then rotated by the sensor yaw (sensorPose; used by the legs dataset to
-	// represent asymmetric scans).
+	// then turned by the mount (sensorPose: its yaw is used by the legs
+	// dataset to represent asymmetric scans; a roll of 180 deg mirrors them).
 	const double step = angularStep(scan);
 	const double local = scan.rightToLeft ? -0.5 * scan.aperture + step * static_cast<double>(i)
 										  : 0.5 * scan.aperture - step * static_cast<double>(i);
-	return local + scan.sensorPose.yaw();
+	return common::scanMount(scan.sensorPose).bearing(local);
 }
 
 namespace

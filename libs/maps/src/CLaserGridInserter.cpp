@@ -1,4 +1,5 @@
 #include <hslam/maps/CLaserGridInserter.h>
+#include <hslam/common/range_data.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +19,8 @@ TLaserInsertStats CLaserGridInserter::insert(CTiledOccupancyGrid& grid, const mr
 											 const std::vector<bool>* hitIsExcluded, TLaserInsertionRecord* record)
 {
 	TLaserInsertStats stats;
-	const mrpt::poses::CPose2D sensor = robotPose + mrpt::poses::CPose2D(scan.sensorPose);
+	const common::TScanMount mount = common::scanMount(scan.sensorPose);
+	const mrpt::poses::CPose2D sensor = robotPose + mount.pose();
 	const auto& dirs = m_sinCos.getSinCosForScan(scan);
 	const CTiledGridGeometry& geo = grid.geometry();
 	const TGlobalCell origin = geo.cellOf(sensor.x(), sensor.y());
@@ -48,7 +50,7 @@ TLaserInsertStats CLaserGridInserter::insert(CTiledOccupancyGrid& grid, const mr
 		if (hit && hitIsExcluded && i < hitIsExcluded->size() && (*hitIsExcluded)[i]) hit = false;
 
 		// Beam end point: sensor frame -> world frame.
-		const double lx = range * dirs.ccos[i], ly = range * dirs.csin[i];
+		const double lx = range * dirs.ccos[i], ly = mount.sine() * range * dirs.csin[i];
 		const TGlobalCell end = geo.cellOf(sensor.x() + c * lx - s * ly, sensor.y() + s * lx + c * ly);
 		const TLogOddsCell before = (record && hit) ? grid.rawCell(end) : kUnknownCell;
 		stats.cells_updated += grid.updateRay(origin, end, m_freeLogOdds, hit ? m_occupiedLogOdds : m_freeLogOdds);

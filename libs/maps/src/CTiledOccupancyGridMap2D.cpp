@@ -1,4 +1,5 @@
 #include <hslam/common/options_io.h>
+#include <hslam/common/range_data.h>
 #include <hslam/maps/CTiledOccupancyGridMap2D.h>
 #include <hslam/maps/grid_rendering.h>
 #include <mrpt/config/CConfigFileMemory.h>
@@ -201,19 +202,18 @@ double CTiledOccupancyGridMap2D::internal_computeObservationLikelihood(const mrp
 {
 	const auto* scan = dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&obs);
 	if (!scan) return 0.0;
-	const mrpt::poses::CPose2D sensor = mrpt::poses::CPose2D(takenFrom) + mrpt::poses::CPose2D(scan->sensorPose);
+	const common::TScanMount mount = common::scanMount(scan->sensorPose);
+	const mrpt::poses::CPose2D sensor = mrpt::poses::CPose2D(takenFrom) + mount.pose();
 	const double c = std::cos(sensor.phi()), s = std::sin(sensor.phi());
 	const double inv2s2 = 0.5 / (likelihoodOptions.sigma_m * likelihoodOptions.sigma_m);
 	const size_t n = scan->getScanSize();
-	const double aperture = scan->aperture;
-	const double step = n > 1 ? aperture / static_cast<double>(n - 1) : 0.0;
 	double logLik = 0;
 	for (size_t i = 0; i < n; i += static_cast<size_t>(likelihoodOptions.decimation))
 	{
 		const double r = scan->getScanRange(i);
 		if (!scan->getScanRangeValidity(i) || !std::isfinite(r) || r <= 0 || r > likelihoodOptions.max_range_m) continue;
-		const double a = scan->rightToLeft ? -0.5 * aperture + step * i : 0.5 * aperture - step * i;
-		const double lx = r * std::cos(a), ly = r * std::sin(a);
+		const double a = scan->getScanAngle(i);
+		const double lx = r * std::cos(a), ly = mount.sine() * r * std::sin(a);
 		const double d = distanceToNearestObstacle(sensor.x() + c * lx - s * ly, sensor.y() + s * lx + c * ly);
 		logLik += std::log(likelihoodOptions.z_hit * std::exp(-d * d * inv2s2) + likelihoodOptions.z_random);
 	}

@@ -1,5 +1,6 @@
 /* hslam nav: CRangeFusion / CPolarProfile (see CRangeFusion.h). */
 #include <hslam/nav/CRangeFusion.h>
+#include <hslam/common/range_data.h>
 #include <mrpt/math/wrap2pi.h>
 
 #include <algorithm>
@@ -135,26 +136,25 @@ void CRangeFusion::fuseInto(CPolarProfile& p, const mrpt::obs::CObservation2DRan
 	m_laserX.clear(), m_laserY.clear();
 	if (scan && m_opts.use_laser)
 	{
-		const auto& sp = scan->sensorPose;
+		const common::TScanMount mount = common::scanMount(scan->sensorPose);
 		const size_t n = scan->getScanSize();
 		if (n != m_beamCount || scan->aperture != m_beamAperture || scan->rightToLeft != m_beamRightToLeft)
 		{
 			m_beamCount = n, m_beamAperture = scan->aperture, m_beamRightToLeft = scan->rightToLeft;
 			m_beamCos.resize(n), m_beamSin.resize(n);
-			const double step = n > 1 ? scan->aperture / (n - 1) : 0.0;
 			for (size_t i = 0; i < n; ++i)
 			{
-				const double a = scan->rightToLeft ? -0.5 * scan->aperture + i * step : 0.5 * scan->aperture - i * step;
+				const double a = scan->getScanAngle(i);
 				m_beamCos[i] = std::cos(a), m_beamSin[i] = std::sin(a);
 			}
 		}
-		const double cy = std::cos(sp.yaw()), sy = std::sin(sp.yaw());
+		const double cy = std::cos(mount.yaw_rad), sy = std::sin(mount.yaw_rad);
 		for (size_t i = 0; i < n; ++i)
 		{
 			if (!scan->getScanRangeValidity(i)) continue;
 			const double r = scan->getScanRange(i);
-			const double lx = r * m_beamCos[i], ly = r * m_beamSin[i];
-			const double x = sp.x() + cy * lx - sy * ly, y = sp.y() + sy * lx + cy * ly;
+			const double lx = r * m_beamCos[i], ly = mount.sine() * r * m_beamSin[i];
+			const double x = mount.x_m + cy * lx - sy * ly, y = mount.y_m + sy * lx + cy * ly;
 			p.addPoint(std::atan2(y, x), std::sqrt(x * x + y * y));
 			m_laserX.push_back(x), m_laserY.push_back(y);
 		}

@@ -17,6 +17,7 @@
 #include <mrpt/math/TPoint2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 #include <mrpt/poses/CPose2D.h>
+#include <mrpt/poses/CPose3D.h>
 
 #include <cmath>
 #include <cstddef>
@@ -25,6 +26,30 @@
 
 namespace hslam::common
 {
+/** Where a 2D scanner's beams lie on the robot's plane, from the scan's full
+ * 3D sensorPose. The beam at scan angle a points along bearing yaw_rad + a,
+ * or yaw_rad - a when the scanner is mounted upside down (its z axis points
+ * down: a roll of 180 deg, as rawlog-grabber's pose_roll = 180 records it;
+ * its beams then sweep clockwise seen from above). The 2D part of the pose
+ * alone (CPose2D(sensorPose)) reads such a scanner's scans as the world
+ * mirrored. Tilts of a few degrees are ignored: the maps are of one plane. */
+struct TScanMount
+{
+	double x_m = 0, y_m = 0;
+	double yaw_rad = 0;  //!< bearing (robot frame) of the beam at scan angle 0
+	bool upside_down = false;
+
+	/** Robot-frame bearing of the beam at `scanAngle_rad`. */
+	double bearing(double scanAngle_rad) const { return yaw_rad + (upside_down ? -scanAngle_rad : scanAngle_rad); }
+	/** (x, y, yaw_rad): composed with a point (r cos a, sine() x r sin a). */
+	mrpt::poses::CPose2D pose() const { return {x_m, y_m, yaw_rad}; }
+	/** -1 for an upside-down scanner: the sign of a beam's sine in pose(). */
+	double sine() const { return upside_down ? -1.0 : 1.0; }
+};
+
+/** The mount of a scanner at `sensorPose` (robot frame). */
+TScanMount scanMount(const mrpt::poses::CPose3D& sensorPose);
+
 /** The valid returns of a scan as points in the robot frame, in beam order. */
 struct TScanPoints
 {
@@ -41,10 +66,13 @@ struct TRangeData
 	static constexpr size_t kNoPoint = std::numeric_limits<size_t>::max();
 
 	double t_s = 0;  //!< time stamp of the scan (s)
-	mrpt::poses::CPose2D sensor_pose;  //!< sensor on the robot (2D part of the scan's sensorPose)
+	/** Sensor on the robot: position, and the bearing of its beam at scan
+	 * angle 0 (TScanMount::pose(); for a level scanner the 2D part of the
+	 * scan's sensorPose). Use bearing_rad for the beams. */
+	mrpt::poses::CPose2D sensor_pose;
 	double max_range_m = 0;  //!< the scanner's "no echo" range
-	/** Per beam, in scan order: bearing in the robot frame (sensor yaw
-	 * included), measured range (as recorded, also for invalid beams),
+	/** Per beam, in scan order: bearing in the robot frame (the mount
+	 * included, TScanMount::bearing), measured range (as recorded, also for invalid beams),
 	 * direction cosines in the robot frame, and the one validity rule. */
 	std::vector<double> bearing_rad, range_m, cos_bearing, sin_bearing;
 	std::vector<bool> valid;
