@@ -24,6 +24,7 @@
 #   creep     odometry reports 1 % of the wheel motion all run (laser only)
 #   mount     the laser 0.25 m ahead, 0.05 m left, turned 3 deg (not in VARIANTS
 #             by default: the rawlog's sensor pose says so, as a grabber's would)
+#   upsidedown  the laser mounted upside down (sensorPose roll 180 deg)
 #
 #   scripts/stress-matrix.sh out/stress
 #   WORLDS="open-hall" VARIANTS="urg" scripts/stress-matrix.sh out/hall --set icp.min_good_points=0
@@ -33,7 +34,7 @@ out=$1; shift
 here=$(cd "$(dirname "$0")/.." && pwd)
 bin=${HSLAM_BIN:-$here/build/bin}
 worlds=${WORLDS:-floor corridor long-corridor open-hall lab floor-laps}
-variants=${VARIANTS:-base urg lms100 far slowscan fastscan wbias dbias noisy fast freeze drop lag creep}
+variants=${VARIANTS:-base urg lms100 far slowscan fastscan wbias dbias noisy fast freeze drop lag creep upsidedown}
 
 variantSettings() {
 	case $1 in
@@ -52,6 +53,7 @@ variantSettings() {
 		lag) echo "--set odometry.fault=lag --set odometry.fault_lag_s=0.3" ;;
 		creep) echo "--set odometry.fault=freeze --set odometry.fault_motion_scale=0.01" ;;
 		mount) echo "--set laser.x_m=0.25 --set laser.y_m=0.05 --set laser.yaw_deg=3" ;;
+		upsidedown) echo "--set laser.upside_down=true" ;;
 		*) echo "stress-matrix: unknown variant '$1'" >&2; return 2 ;;
 	esac
 }

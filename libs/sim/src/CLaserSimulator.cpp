@@ -39,7 +39,7 @@ void CLaserSimulator::simulate(const CWorld& world, const mrpt::math::TPose2D& r
 	scan.rightToLeft = true;
 	scan.maxRange = static_cast<float>(m_maxRange);
 	scan.stdError = static_cast<float>(m_opts.noise_std_m);
-	scan.sensorPose = mrpt::poses::CPose3D(m_opts.x_m, m_opts.y_m, m_opts.z_m, m_opts.yaw_rad, 0, 0);
+	scan.sensorPose = mrpt::poses::CPose3D(m_opts.x_m, m_opts.y_m, m_opts.z_m, m_opts.yaw_rad, 0, m_opts.upside_down ? M_PI : 0.0);
 	scan.resizeScan(m_beams);
 	if (beamTags) beamTags->assign(m_beams, TObjectTag{EObjectKind::none, -1, 0});
 
@@ -49,7 +49,8 @@ void CLaserSimulator::simulate(const CWorld& world, const mrpt::math::TPose2D& r
 	std::normal_distribution<double> gauss(0.0, 1.0);
 	for (size_t i = 0; i < m_beams; ++i)
 	{
-		const TRayHit hit = world.castRay(origin, heading + beamAngle(i), m_maxRange);
+		const double along = m_opts.upside_down ? -beamAngle(i) : beamAngle(i);  // seen from above
+		const TRayHit hit = world.castRay(origin, heading + along, m_maxRange);
 		double r = hit.range_m;
 		bool valid = hit.hit;
 		if (valid)

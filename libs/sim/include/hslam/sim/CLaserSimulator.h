@@ -32,6 +32,9 @@ struct TLaserOptions
 	double range_resolution_m = 0.01;  //!< reported range step (cm mode); 0 = none
 	double rate_hz = 10;  //!< scans per second (thesis: 10 Hz processing)
 	double x_m = 0.021, y_m = 0, z_m = 0.3, yaw_rad = 0;  //!< sensor pose on the robot (Aria LaserX 21 mm)
+	/** Mounted upside down (roll 180 deg in the scan's sensorPose): the beams
+	 * sweep clockwise seen from above, as such a laser's do. */
+	bool upside_down = false;
 	std::string label = "LASER";
 
 	template <class V>
@@ -49,6 +52,7 @@ struct TLaserOptions
 		v.real("y_m", y_m, -2.0, 2.0);
 		v.real("z_m", z_m, 0.0, 3.0);
 		v.degrees("yaw_deg", yaw_rad, -180.0, 180.0);
+		v.flag("upside_down", upside_down);
 		v.text("label", label);
 	}
 };
