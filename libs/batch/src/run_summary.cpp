@@ -48,6 +48,9 @@ void addWarnings(TRunSummary& s)
 	if (s.scans == 0) w.push_back("no laser scan was used (see [process] laser_label)");
 	if (s.scans_ignored > 0)
 		w.push_back(std::to_string(s.scans_ignored) + " laser scans ignored: another sensor label");
+	if (s.laser_returns_inside_robot > 0)
+		w.push_back(std::to_string(s.laser_returns_inside_robot) +
+					" laser returns inside the robot's footprint dropped (see [process] footprint_*)");
 	if (s.odometry_gaps > 0) w.push_back(std::to_string(s.odometry_gaps) + " odometry gaps (motion unknown)");
 	if (s.matches_failed > 0)
 		w.push_back(std::to_string(s.matches_failed) + " of " + std::to_string(s.matches) + " scan matches failed");
@@ -70,6 +73,7 @@ TRunSummary summarizeRun(const slam::CMappingPipeline& pipeline, const TBatchReq
 	s.entries = c.entries;
 	s.scans = c.laser_scans;
 	s.scans_ignored = c.laser_scans_ignored;
+	s.laser_returns_inside_robot = c.laser_returns_inside_robot;
 	s.odometry_gaps = c.odometry_gaps;
 	s.sonar_observations = c.sonar_observations;
 	s.tiles = pipeline.grid().tileCount();
@@ -108,6 +112,7 @@ std::string runSummaryToJson(const TRunSummary& s)
 		{"entries", std::to_string(s.entries)},
 		{"scans", std::to_string(s.scans)},
 		{"scans_ignored", std::to_string(s.scans_ignored)},
+		{"laser_returns_inside_robot", std::to_string(s.laser_returns_inside_robot)},
 		{"odometry_gaps", std::to_string(s.odometry_gaps)},
 		{"sonar_observations", std::to_string(s.sonar_observations)},
 		{"tiles", std::to_string(s.tiles)},

@@ -64,6 +64,44 @@ TRangeData makeRangeData(const mrpt::obs::CObservation2DRangeScan& scan)
 	return d;
 }
 
+namespace
+{
+/** Calls f(beam) for each valid return of `scan` inside `footprint`. */
+template <class F>
+void forReturnsInside(const mrpt::obs::CObservation2DRangeScan& scan, const TRobotFootprint& footprint, F f)
+{
+	if (footprint.empty()) return;
+	const TScanMount mount = scanMount(scan.sensorPose);
+	const mrpt::poses::CPose2D sensor = mount.pose();
+	for (size_t b = 0; b < scan.getScanSize(); ++b)
+	{
+		if (!isValidReturn(scan, b)) continue;
+		const double r = scan.getScanRange(b), a = scan.getScanAngle(b);
+		double x = 0, y = 0;
+		sensor.composePoint(r * std::cos(a), mount.sine() * r * std::sin(a), x, y);
+		if (footprint.contains(x, y) && f(b)) return;
+	}
+}
+}  // namespace
+
+size_t invalidateReturnsInside(mrpt::obs::CObservation2DRangeScan& scan, const TRobotFootprint& footprint)
+{
+	size_t n = 0;
+	forReturnsInside(scan, footprint, [&](size_t b) {
+		scan.setScanRangeValidity(b, false);
+		++n;
+		return false;  // all of them
+	});
+	return n;
+}
+
+bool hasReturnsInside(const mrpt::obs::CObservation2DRangeScan& scan, const TRobotFootprint& footprint)
+{
+	bool any = false;
+	forReturnsInside(scan, footprint, [&](size_t) { return any = true; });
+	return any;
+}
+
 TRangeData withoutBeams(const TRangeData& data, const std::vector<bool>& excluded)
 {
 	TRangeData d = data;

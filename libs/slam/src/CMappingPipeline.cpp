@@ -186,8 +186,18 @@ void CMappingPipeline::dispatchObservation(const mrpt::obs::CObservation::Ptr& o
 		++m_counters.other_observations;
 }
 
-void CMappingPipeline::processScan(const mrpt::obs::CObservation2DRangeScan& scan)
+void CMappingPipeline::processScan(const mrpt::obs::CObservation2DRangeScan& recorded)
 {
+	// Returns inside the robot are dropped once, here: every stage (range
+	// data, grid, people, loop closure, observers) sees them invalid.
+	mrpt::obs::CObservation2DRangeScan withoutRobot;
+	const bool robotInView = common::hasReturnsInside(recorded, m_processOptions.footprint);
+	if (robotInView)
+	{
+		withoutRobot = recorded;
+		m_counters.laser_returns_inside_robot += common::invalidateReturnsInside(withoutRobot, m_processOptions.footprint);
+	}
+	const mrpt::obs::CObservation2DRangeScan& scan = robotInView ? withoutRobot : recorded;
 	++m_counters.laser_scans;
 	TOdometryIncrement increment;
 	{

@@ -3,7 +3,8 @@
  * and shown at the top of report.html).
  *
  * summary.json keys (units in the names): input, output_dir, hslam_version,
- * mrpt_version, pose_method, entries, scans, scans_ignored, odometry_gaps,
+ * mrpt_version, pose_method, entries, scans, scans_ignored,
+ * laser_returns_inside_robot, odometry_gaps,
  * sonar_observations, tiles, sonar_corners, leg_tracks and person_tracks
  * (tracks confirmed at least once),
  * odometry_distance_scale and odometry_scale_applied ([odometry_self_calibration]'s
@@ -29,6 +30,7 @@ struct TRunSummary
 {
 	std::string input, output_dir, pose_method;
 	size_t entries = 0, scans = 0, scans_ignored = 0, odometry_gaps = 0, sonar_observations = 0;
+	size_t laser_returns_inside_robot = 0;  //!< [process] footprint_*: returns of the robot itself
 	size_t tiles = 0, sonar_corners = 0, leg_tracks = 0, person_tracks = 0;
 	size_t matches = 0, matches_failed = 0, matches_rejected = 0;
 	double odometry_distance_scale = 1;  //!< fitted by [odometry_self_calibration]

@@ -50,6 +50,26 @@ struct TScanMount
 /** The mount of a scanner at `sensorPose` (robot frame). */
 TScanMount scanMount(const mrpt::poses::CPose3D& sensorPose);
 
+/** The robot's outline in its own frame (x forward, y left): a return
+ * inside it is the robot itself (a mast, a bumper, cables) or a sensor
+ * fault, never the world. All zero = no outline. */
+struct TRobotFootprint
+{
+	double front_m = 0, rear_m = 0, half_width_m = 0;  //!< x in [-rear, front], |y| <= half_width
+
+	bool empty() const { return front_m + rear_m <= 0 || half_width_m <= 0; }
+	bool contains(double x_m, double y_m) const
+	{
+		return !empty() && x_m <= front_m && x_m >= -rear_m && std::abs(y_m) <= half_width_m;
+	}
+};
+
+/** Marks the valid returns of `scan` that fall inside `footprint` invalid
+ * (the scan's mount applied, scanMount); returns how many. */
+size_t invalidateReturnsInside(mrpt::obs::CObservation2DRangeScan& scan, const TRobotFootprint& footprint);
+/** Whether some valid return of `scan` falls inside `footprint`. */
+bool hasReturnsInside(const mrpt::obs::CObservation2DRangeScan& scan, const TRobotFootprint& footprint);
+
 /** The valid returns of a scan as points in the robot frame, in beam order. */
 struct TScanPoints
 {

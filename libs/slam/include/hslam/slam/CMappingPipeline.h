@@ -52,18 +52,27 @@
 #include <string>
 #include <vector>
 
+#include <hslam/common/range_data.h>
+
 namespace hslam::slam
 {
 struct TProcessOptions
 {
 	std::string laser_label;  //!< only scans with this sensor label are used; empty = all 2D scans
 	std::string sonar_label;  //!< only CObservationRange with this label are used; empty = all
+	/** Laser returns inside the robot are not the world (Pioneer 3-DX:
+	 * ARIA's p3dx.p RobotLengthFront 210 mm, RobotLengthRear 301 mm,
+	 * RobotWidth 425 mm); all 0 = keep every return. */
+	common::TRobotFootprint footprint{0.21, 0.301, 0.2125};
 
 	template <class V>
 	void visit(V& v)
 	{
 		v.text("laser_label", laser_label);
 		v.text("sonar_label", sonar_label);
+		v.real("footprint_front_m", footprint.front_m, 0.0, 10.0);
+		v.real("footprint_rear_m", footprint.rear_m, 0.0, 10.0);
+		v.real("footprint_half_width_m", footprint.half_width_m, 0.0, 10.0);
 	}
 };
 
@@ -72,6 +81,7 @@ struct TPipelineCounters
 	size_t entries = 0;  //!< rawlog entries processed
 	size_t laser_scans = 0;  //!< scans used for mapping
 	size_t laser_scans_ignored = 0;  //!< scans with another sensor label
+	size_t laser_returns_inside_robot = 0;  //!< returns dropped inside [process] footprint_*
 	size_t odometry_readings = 0;  //!< odometry actions or observations
 	size_t odometry_gaps = 0;  //!< intervals with unknown motion
 	size_t sonar_observations = 0;  //!< sonar ring observations used (grid and/or TBF)
