@@ -67,3 +67,17 @@ TEST(ScanMount, RangeDataOfAnUpsideDownLaserIsTheMirroredScan)
 	EXPECT_NEAR(end.x, flipped.points.xy[2].x, 1e-12);
 	EXPECT_NEAR(end.y, flipped.points.xy[2].y, 1e-12);
 }
+
+TEST(RobotFootprint, ReturnsInsideTheOutlineAreMarkedInvalid)
+{
+	const hslam::common::TRobotFootprint p3dx{0.21, 0.301, 0.2125};
+	auto scan = threeBeams(CPose3D(0.1, 0, 0.3, 0, 0, 0));
+	EXPECT_FALSE(hslam::common::hasReturnsInside(scan, p3dx));  // 1, 2, 3 m away
+	scan.setScanRange(0, 0.15f);  // right, 0.15 m: (0.1, -0.15) is inside
+	scan.setScanRange(1, 0.12f);  // ahead, 0.12 m: x = 0.22 is past the front (0.21)
+	EXPECT_TRUE(hslam::common::hasReturnsInside(scan, p3dx));
+	EXPECT_EQ(hslam::common::invalidateReturnsInside(scan, p3dx), 1u);
+	EXPECT_FALSE(scan.getScanRangeValidity(0));
+	EXPECT_TRUE(scan.getScanRangeValidity(1));
+	EXPECT_EQ(hslam::common::invalidateReturnsInside(scan, {}), 0u);  // no outline: keep all
+}

@@ -3,6 +3,9 @@
 
 #include <mrpt/system/datetime.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace hslam::common
 {
 bool isValidReturn(const mrpt::obs::CObservation2DRangeScan& scan, size_t beam)
@@ -73,9 +76,12 @@ void forReturnsInside(const mrpt::obs::CObservation2DRangeScan& scan, const TRob
 	if (footprint.empty()) return;
 	const TScanMount mount = scanMount(scan.sensorPose);
 	const mrpt::poses::CPose2D sensor = mount.pose();
+	// no return farther from the sensor than the outline's farthest corner is inside
+	const double reach_m = std::hypot(std::max(footprint.front_m - mount.x_m, footprint.rear_m + mount.x_m),
+									  footprint.half_width_m + std::abs(mount.y_m));
 	for (size_t b = 0; b < scan.getScanSize(); ++b)
 	{
-		if (!isValidReturn(scan, b)) continue;
+		if (!isValidReturn(scan, b) || scan.getScanRange(b) > reach_m) continue;
 		const double r = scan.getScanRange(b), a = scan.getScanAngle(b);
 		double x = 0, y = 0;
 		sensor.composePoint(r * std::cos(a), mount.sine() * r * std::sin(a), x, y);
