@@ -58,7 +58,7 @@ TRangeData makeRangeData(const mrpt::obs::CObservation2DRangeScan& scan)
 		if (!d.valid[b]) continue;
 		const double r = d.range_m[b];
 		mrpt::math::TPoint2D p;
-		d.sensor_pose.composePoint(r * std::cos(a), mount.sine() * r * std::sin(a), p.x, p.y);
+		d.sensor_pose.composePoint(r * std::cos(a), mount.sineSign() * r * std::sin(a), p.x, p.y);
 		d.beam_point[b] = d.points.xy.size();
 		d.points.xy.push_back(p);
 		d.points.range_m.push_back(r);
@@ -84,7 +84,7 @@ void forReturnsInside(const mrpt::obs::CObservation2DRangeScan& scan, const TRob
 		if (!isValidReturn(scan, b) || scan.getScanRange(b) > reach_m) continue;
 		const double r = scan.getScanRange(b), a = scan.getScanAngle(b);
 		double x = 0, y = 0;
-		sensor.composePoint(r * std::cos(a), mount.sine() * r * std::sin(a), x, y);
+		sensor.composePoint(r * std::cos(a), mount.sineSign() * r * std::sin(a), x, y);
 		if (footprint.contains(x, y) && f(b)) return;
 	}
 }

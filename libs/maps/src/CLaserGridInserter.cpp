@@ -50,7 +50,7 @@ TLaserInsertStats CLaserGridInserter::insert(CTiledOccupancyGrid& grid, const mr
 		if (hit && hitIsExcluded && i < hitIsExcluded->size() && (*hitIsExcluded)[i]) hit = false;
 
 		// Beam end point: sensor frame -> world frame.
-		const double lx = range * dirs.ccos[i], ly = mount.sine() * range * dirs.csin[i];
+		const double lx = range * dirs.ccos[i], ly = mount.sineSign() * range * dirs.csin[i];
 		const TGlobalCell end = geo.cellOf(sensor.x() + c * lx - s * ly, sensor.y() + s * lx + c * ly);
 		const TLogOddsCell before = (record && hit) ? grid.rawCell(end) : kUnknownCell;
 		stats.cells_updated += grid.updateRay(origin, end, m_freeLogOdds, hit ? m_occupiedLogOdds : m_freeLogOdds);

@@ -213,7 +213,7 @@ double CTiledOccupancyGridMap2D::internal_computeObservationLikelihood(const mrp
 		const double r = scan->getScanRange(i);
 		if (!scan->getScanRangeValidity(i) || !std::isfinite(r) || r <= 0 || r > likelihoodOptions.max_range_m) continue;
 		const double a = scan->getScanAngle(i);
-		const double lx = r * std::cos(a), ly = mount.sine() * r * std::sin(a);
+		const double lx = r * std::cos(a), ly = mount.sineSign() * r * std::sin(a);
 		const double d = distanceToNearestObstacle(sensor.x() + c * lx - s * ly, sensor.y() + s * lx + c * ly);
 		logLik += std::log(likelihoodOptions.z_hit * std::exp(-d * d * inv2s2) + likelihoodOptions.z_random);
 	}

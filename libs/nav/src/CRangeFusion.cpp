@@ -153,7 +153,7 @@ void CRangeFusion::fuseInto(CPolarProfile& p, const mrpt::obs::CObservation2DRan
 		{
 			if (!scan->getScanRangeValidity(i)) continue;
 			const double r = scan->getScanRange(i);
-			const double lx = r * m_beamCos[i], ly = mount.sine() * r * m_beamSin[i];
+			const double lx = r * m_beamCos[i], ly = mount.sineSign() * r * m_beamSin[i];
 			const double x = mount.x_m + cy * lx - sy * ly, y = mount.y_m + sy * lx + cy * ly;
 			p.addPoint(std::atan2(y, x), std::sqrt(x * x + y * y));
 			m_laserX.push_back(x), m_laserY.push_back(y);

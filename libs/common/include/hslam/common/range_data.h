@@ -41,10 +41,10 @@ struct TScanMount
 
 	/** Robot-frame bearing of the beam at `scanAngle_rad`. */
 	double bearing(double scanAngle_rad) const { return yaw_rad + (upside_down ? -scanAngle_rad : scanAngle_rad); }
-	/** (x, y, yaw_rad): composed with a point (r cos a, sine() x r sin a). */
+	/** (x, y, yaw_rad): composed with a point (r cos a, sineSign() x r sin a). */
 	mrpt::poses::CPose2D pose() const { return {x_m, y_m, yaw_rad}; }
 	/** -1 for an upside-down scanner: the sign of a beam's sine in pose(). */
-	double sine() const { return upside_down ? -1.0 : 1.0; }
+	double sineSign() const { return upside_down ? -1.0 : 1.0; }
 };
 
 /** The mount of a scanner at `sensorPose` (robot frame). */
