@@ -100,6 +100,36 @@ void print(const std::string& name, const TScores& s)
 	std::cout << name << ": ATE " << s.ate_m << " m (odometry " << s.odometry_ate_m << "), RPE 5 m " << s.rpe5_m
 			  << " m (odometry " << s.odometry_rpe5_m << ")\n";
 }
+
+/** The default pipeline on `folder` and the same run with one remedy
+ * switched off (`off`, a --set override), both printed. */
+struct TRemedy
+{
+	TScores on, off;
+};
+TRemedy withAndWithout(const std::string& folder, const std::string& off, const std::string& name)
+{
+	TRemedy r{runDefault(folder), runDefault(folder, {off})};
+	print(name + ", default", r.on);
+	print(name + ", " + off, r.off);
+	return r;
+}
+
+/** hslam-simulate overrides for a scanner unlike the LMS200 (rate 0: the world's). */
+std::string customLaser(double fov_deg, double resolution_deg, double maxRange_m, double rate_hz = 0)
+{
+	std::ostringstream o;
+	o << "--set laser.preset=custom --set laser.fov_deg=" << fov_deg << " --set laser.resolution_deg=" << resolution_deg
+	  << " --set laser.max_range_m=" << maxRange_m;
+	if (rate_hz > 0) o << " --set laser.rate_hz=" << rate_hz;
+	return o.str();
+}
+
+/** hslam-simulate overrides: odometry fault `fault` for 10 s from t = 30 s (stress matrix freeze / drop). */
+std::string fault10sAt30(const std::string& fault)
+{
+	return "--set odometry.fault=" + fault + " --set odometry.fault_start_s=30 --set odometry.fault_duration_s=10";
+}
 }  // namespace
 
 TEST(FrontEndScenarios, LaserOnlyIsTrackedByMatchingAlone)
@@ -208,12 +238,8 @@ TEST(FrontEndScenarios, ReadingsLostAtSpeedDownACorridorKeepTheVelocity)
 	// back to the last keyframe, and the estimate stood still through the
 	// fault. [motion_prior] max_decel_mps2 keeps the velocity measured before.
 	hslam::testing::CTempDir dir;
-	const auto lost = simulated("long-corridor", dir,
-								"--set odometry.fault=drop --set odometry.fault_start_s=30 --set odometry.fault_duration_s=10");
-	const TScores kept = runDefault(lost);
-	const TScores stood = runDefault(lost, {"motion_prior.max_decel_mps2=0"});
-	print("long corridor, readings lost 10 s, velocity kept", kept);
-	print("long corridor, readings lost 10 s, max_decel_mps2 = 0", stood);
+	const auto lost = simulated("long-corridor", dir, fault10sAt30("drop"));
+	const auto [kept, stood] = withAndWithout(lost, "motion_prior.max_decel_mps2=0", "long corridor, readings lost 10 s");
 	EXPECT_GT(stood.ate_m, 0.9 * stood.odometry_ate_m);  // measured 4.36 m against 3.76: this test can fail
 	EXPECT_LT(kept.ate_m, 0.25 * stood.ate_m);  // measured 0.31 m (0.35 before the velocity was held)
 }
@@ -227,12 +253,8 @@ TEST(FrontEndScenarios, ReadingsFrozenAtSpeedDownACorridorKeepTheVelocity)
 	// velocity from before the zeros is held through the fault and the first
 	// frozen prior catches up on the two scans.
 	hslam::testing::CTempDir dir;
-	const auto frozen = simulated(
-		"long-corridor", dir, "--set odometry.fault=freeze --set odometry.fault_start_s=30 --set odometry.fault_duration_s=10");
-	const TScores held = runDefault(frozen);
-	const TScores off = runDefault(frozen, {"motion_prior.max_decel_mps2=0"});
-	print("long corridor, readings frozen 10 s, velocity held", held);
-	print("long corridor, readings frozen 10 s, max_decel_mps2 = 0", off);
+	const auto frozen = simulated("long-corridor", dir, fault10sAt30("freeze"));
+	const auto [held, off] = withAndWithout(frozen, "motion_prior.max_decel_mps2=0", "long corridor, readings frozen 10 s");
 	EXPECT_LT(held.ate_m, 0.6);  // measured 0.378 m (1.63 m before the velocity was held)
 	EXPECT_LT(held.ate_m, 0.2 * off.ate_m);  // measured 4.04 m (odometry 3.76)
 }
@@ -364,9 +386,7 @@ TEST(FrontEndScenarios, LongRangeLaserDownACorridorIsNotPinnedByGrazingPoints)
 	// pairing distance (the default) stops the creep, as does not aligning
 	// the grazing points (max_incidence_deg).
 	hslam::testing::CTempDir dir;
-	const auto folder = simulated("corridor", dir,
-								  "--set laser.preset=custom --set laser.fov_deg=180 --set laser.resolution_deg=0.5 "
-								  "--set laser.max_range_m=20");
+	const auto folder = simulated("corridor", dir, customLaser(180, 0.5, 20));
 	const TScores byDefault = runDefault(folder);
 	// (the covariance counting information per length of wall, [icp]
 	// covariance_full_weight_spacing_m, also keeps the creep out: 0.215 m;
@@ -394,10 +414,8 @@ TEST(FrontEndScenarios, WornTyresAreCalibratedOutByMatching)
 	// own bias and is not applied.
 	hslam::testing::CTempDir dir;
 	const auto worn = simulated("floor", dir, "--set robot.es_wheel_scale_ratio=0.95");
-	const TScores calibrated = runDefault(worn);
-	const TScores uncalibrated = runDefault(worn, {"odometry_self_calibration.enabled=false"});
-	print("floor, worn tyres, calibrated", calibrated);
-	print("floor, worn tyres, not calibrated", uncalibrated);
+	const auto [calibrated, uncalibrated] =
+		withAndWithout(worn, "odometry_self_calibration.enabled=false", "floor, worn tyres");
 	std::cout << "fitted distance scale " << calibrated.odometry_scale << " (truth 0.95)\n";
 	EXPECT_TRUE(calibrated.odometry_scale_applied);
 	EXPECT_LT(calibrated.odometry_scale, 0.985);  // measured 0.97x: the match leaves part to odometry
@@ -419,10 +437,8 @@ TEST(FrontEndScenarios, UnequalWheelsAreCalibratedOutOfTheHeading)
 	// the accepted matches and corrects the odometry.
 	hslam::testing::CTempDir dir;
 	const auto bent = simulated("floor", dir, "--set robot.ed_wheel_diameter_ratio=1.02");
-	const TScores calibrated = runDefault(bent);
-	const TScores uncalibrated = runDefault(bent, {"odometry_self_calibration.estimate_heading=false"});
-	print("floor, unequal wheels, heading calibrated", calibrated);
-	print("floor, unequal wheels, not calibrated", uncalibrated);
+	const auto [calibrated, uncalibrated] =
+		withAndWithout(bent, "odometry_self_calibration.estimate_heading=false", "floor, unequal wheels");
 	std::cout << "fitted curvature " << calibrated.odometry_curvature_rad_per_m * 180 / M_PI << " deg/m\n";
 	EXPECT_GT(uncalibrated.ate_m, 3.0);  // measured 5.8 m (odometry 36.6 m): this test can fail
 	EXPECT_TRUE(calibrated.odometry_heading_applied);
@@ -440,9 +456,7 @@ TEST(FrontEndScenarios, ShortRangeScannerInAnOpenHallIsNoWorseThanOdometry)
 	// ICP match meets the textbook gate ([ukf] weak_gate_nis) and only a
 	// match that pins the translation down refutes the prediction.
 	hslam::testing::CTempDir dir;
-	const auto hall = simulated("open-hall", dir,
-								"--set laser.preset=custom --set laser.fov_deg=240 --set laser.resolution_deg=0.36 "
-								"--set laser.max_range_m=5.6 --set laser.rate_hz=10");
+	const auto hall = simulated("open-hall", dir, customLaser(240, 0.36, 5.6, 10));
 	const TScores s = runDefault(hall);
 	const TScores byGoodness = runDefault(hall, {"icp.min_good_points=0"});
 	print("open hall, 5.6 m scanner", s);

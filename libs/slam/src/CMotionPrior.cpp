@@ -47,8 +47,11 @@ void CMotionPrior::noteZeroRun(const TOdometryIncrement& increment, double dt_s)
 	}
 	else if (m_zeroIncrements == 1 && m_options.max_decel_mps2 > 0 &&
 			 m_lastOdometrySpeed_mps > m_options.max_decel_mps2 * dt_s)
-		m_velocityBeforeZeros = m_velocity,  // the estimates up to the scan before the first zero
-			m_poseBeforeZeros = m_lastPose, m_poseBeforeZeros_s = m_lastPose_s;
+	{  // the estimates up to the scan before the first zero
+		m_velocityBeforeZeros = m_velocity;
+		m_poseBeforeZeros = m_lastPose;
+		m_poseBeforeZeros_s = m_lastPose_s;
+	}
 }
 
 TMotionPrior CMotionPrior::prior(const TOdometryIncrement& increment, double t_s)
