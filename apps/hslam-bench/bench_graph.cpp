@@ -26,6 +26,7 @@
 #include "bench_report.h"
 #include "child_process.h"
 
+#include <hslam/common/command_line.h>
 #include <hslam/eval/evaluate_trajectory.h>
 #include <hslam/graph/CPoseGraph.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
@@ -304,7 +305,7 @@ int runGraphSuite(int argc, char** argv)
 	TCLAP::ValueArg<std::string> out("", "out", "folder for the runs (default ./hslam-bench-graph)", false,
 									 "hslam-bench-graph", "dir", cmd);
 	TCLAP::ValueArg<int> maxKeyframes("", "max-keyframes", "largest synthetic graph (default 10000)", false, 10000, "N", cmd);
-	if (!cmd.parse(argc, argv)) return 0;
+	if (!cmd.parse(argc, argv)) return hslam::common::exitCodeAfterParseStop(argc, argv);
 	const TLapRoute route;
 	std::vector<TGraphSizeRow> ours, mrpt;
 	for (int n : {500, 1000, 2000, 5000, 10000})

@@ -9,6 +9,7 @@
  * collision-free path (8-connected Dijkstra on sim::CFreeSpaceGrid), time to
  * target, minimum clearance, CPU per control step; then per world; then
  * key=value lines. Progress on stderr. */
+#include <hslam/common/command_line.h>
 #include <hslam/common/data_paths.h>
 #include <hslam/common/version.h>
 #include <hslam/io/csv_line.h>
@@ -394,7 +395,7 @@ int runNavSuite(int argc, char** argv)
 {
 	bool help = false;
 	const auto o = parseOptions(argc, argv, help);
-	if (help) return 0;
+	if (help) return common::exitCodeAfterParseStop(argc, argv);
 	fs::create_directories(o.ptg_cache_dir);
 	auto pairs = sim::benchmarkScenarios(o.scene_dir, o.draw);
 	if (!o.worlds.empty())

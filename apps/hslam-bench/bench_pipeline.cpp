@@ -25,6 +25,7 @@
 #include "bench_report.h"
 #include "child_process.h"
 
+#include <hslam/common/command_line.h>
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/eval/evaluate_trajectory.h>
 #include <mrpt/3rdparty/tclap/CmdLine.h>
@@ -344,7 +345,7 @@ int runPipelineSuite(int argc, char** argv)
 										"config_ini/hslam-default.ini", "file.ini", cmd);
 	TCLAP::ValueArg<std::string> out("", "out", "folder for the runs (default ./hslam-bench-pipeline)", false,
 									 "hslam-bench-pipeline", "dir", cmd);
-	if (!cmd.parse(argc, argv)) return 0;
+	if (!cmd.parse(argc, argv)) return hslam::common::exitCodeAfterParseStop(argc, argv);
 	TBenchSetup setup;
 	setup.hslam_process = (fs::canonical("/proc/self/exe").parent_path() / "hslam-process").string();
 	setup.config = fs::absolute(config.getValue()).string();

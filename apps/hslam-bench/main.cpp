@@ -14,6 +14,7 @@
  *   hslam-bench graph [-r RAWLOG -g GROUND_TRUTH ...] [--max-keyframes N]   (own options: bench_graph.cpp)
  *   hslam-bench nav [--pairs-per-world N] [--methods ours,mrpt_nd,...]  (own options: bench_nav.cpp)
  */
+#include <hslam/common/command_line.h>
 #include <hslam/common/version.h>
 #include "bench_common.h"
 #include "bench_vision.h"
@@ -45,7 +46,7 @@ int main(int argc, char** argv)
 		if (argc > 1 && std::string(argv[1]) == "pipeline") return hslam::bench::runPipelineSuite(argc, argv);
 		if (argc > 1 && std::string(argv[1]) == "graph") return hslam::bench::runGraphSuite(argc, argv);
 		if (argc > 1 && std::string(argv[1]) == "nav") return hslam::bench::runNavSuite(argc, argv);
-		if (!cmd.parse(argc, argv)) return 0;  // --help or --version was printed
+		if (!cmd.parse(argc, argv)) return hslam::common::exitCodeAfterParseStop(argc, argv);  // help, version or a parse error
 		if (suite.getValue() == "lines") return hslam::bench::runLinesSuite(rawlogs.getValue(), std::max(1, repetitions.getValue()));
 		if (suite.getValue() == "grid-range")
 			return hslam::bench::runGridRangeSuite(data.isSet() ? data.getValue() : "rawlog_samples", rawlogs.getValue(),

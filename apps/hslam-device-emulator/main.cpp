@@ -8,6 +8,7 @@
  * with --scene and --sim-ini the simulator's sonar model (specular echoes,
  * multipath) and laser noise too.
  * Runs until SIGINT/SIGTERM or --duration; --truth writes the true pose (TUM). */
+#include <hslam/common/command_line.h>
 #include <hslam/common/options_io.h>
 #include <hslam/common/tum_trajectory.h>
 #include <hslam/common/version.h>
@@ -322,7 +323,7 @@ int main(int argc, char** argv)
 	try
 	{
 		TEmulatorArgs args;
-		if (!parseArgs(argc, argv, args)) return 0;
+		if (!parseArgs(argc, argv, args)) return hslam::common::exitCodeAfterParseStop(argc, argv);  // help, version or a parse error
 		return runEmulators(args);
 	}
 	catch (const std::exception& e)

@@ -17,6 +17,7 @@
 #include "CRecordingWriter.h"
 #include "CSensorThread.h"
 
+#include <hslam/common/command_line.h>
 #include <hslam/common/ini_file.h>
 #include <hslam/common/options_io.h>
 #include <hslam/common/version.h>
@@ -392,7 +393,7 @@ int main(int argc, char** argv)
 	try
 	{
 		TGrabberArgs args;
-		if (!parseArgs(argc, argv, args)) return 0;
+		if (!parseArgs(argc, argv, args)) return hslam::common::exitCodeAfterParseStop(argc, argv);  // help, version or a parse error
 		return record(args);
 	}
 	catch (const std::exception& e)

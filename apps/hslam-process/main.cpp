@@ -5,6 +5,7 @@
  *   hslam-process -c config_ini/hslam-default.ini -i input.rawlog -o outdir
  *                 [--set SECTION.KEY=VALUE ...] [--ground-truth REF.tum] [--quiet]
  */
+#include <hslam/common/command_line.h>
 #include <hslam/common/data_paths.h>
 #include <hslam/common/version.h>
 #include <hslam/batch/CBatchProcessor.h>
@@ -35,7 +36,7 @@ int main(int argc, char** argv)
 	TCLAP::SwitchArg overwrite("", "overwrite", "write into a non-empty output folder that hslam did not create", cmd);
 	try
 	{
-		if (!cmd.parse(argc, argv)) return 0;  // --help or --version was printed
+		if (!cmd.parse(argc, argv)) return hslam::common::exitCodeAfterParseStop(argc, argv);  // help, version or a parse error
 		hslam::batch::TBatchRequest request;
 		request.config_file = hslam::common::resolveDataFile(config.getValue());
 		request.overrides = set.getValue();

@@ -6,6 +6,7 @@
  */
 #include "CSimulationWriter.h"
 
+#include <hslam/common/command_line.h>
 #include <hslam/common/config_overrides.h>
 #include <hslam/common/data_paths.h>
 #include <hslam/common/options_io.h>
@@ -173,7 +174,7 @@ int main(int argc, char** argv)
 	TCLAP::SwitchArg quiet("q", "quiet", "no progress or summary on the terminal (default: off)", cmd);
 	try
 	{
-		if (!cmd.parse(argc, argv)) return 0;
+		if (!cmd.parse(argc, argv)) return hslam::common::exitCodeAfterParseStop(argc, argv);
 		if (!(gtRes.getValue() >= 0.01 && gtRes.getValue() <= 1.0))
 			throw std::runtime_error("--gt-resolution must be in [0.01, 1] m");
 		return simulate(hslam::common::resolveDataFile(config.getValue()), set.getValue(), output.getValue(), gtRes.getValue(), quiet.getValue());
