@@ -66,7 +66,7 @@ struct TLoopClosureOptions
 	/** A submap whose search ended with a low score is not searched again
 	 * from the next this-many-minus-one keyframes (its slot among
 	 * max_candidates stays spent); 1 = every time. */
-	int retest_low_score_after_keyframes = 1;
+	int retest_low_score_after_keyframes = 2;
 	/** A search stops once this many of its candidates were accepted (the
 	 * rest, farther away, add little once the keyframe is tied to the old
 	 * map); 0 = every candidate is matched. */
