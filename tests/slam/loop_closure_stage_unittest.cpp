@@ -266,8 +266,8 @@ TEST(LoopClosureStage, RingDrivenThreeTimesIsClosed)
 	// (with the front-end's covariance counting every beam: the per-length
 	// weighting, [icp] covariance_full_weight_spacing_m, alone keeps this
 	// graph's uncertainty small enough here, 0.109 m; so does retesting a
-	// low-score submap only every other keyframe, 0.106 m: the trap needs the
-	// searches of every keyframe)
+	// low-score submap only every other keyframe, 0.106 m: the trap needs a
+	// search at every keyframe, pinned here whatever the default)
 	auto narrow = runStage(run, "lines+icp",
 						   {"loop_closure.ambiguity_window_factor=1", "icp.covariance_full_weight_spacing_m=0",
 							"loop_closure.retest_low_score_after_keyframes=1"},

@@ -66,7 +66,7 @@ struct TLoopClosureOptions
 	/** A submap whose search ended with a low score is not searched again
 	 * from the next this-many-minus-one keyframes (its slot among
 	 * max_candidates stays spent); 1 = every time. */
-	int retest_low_score_after_keyframes = 2;
+	int retest_low_score_after_keyframes = 1;
 	/** A search stops once this many of its candidates were accepted (the
 	 * rest, farther away, add little once the keyframe is tied to the old
 	 * map); 0 = every candidate is matched. */
@@ -89,7 +89,7 @@ struct TLoopClosureOptions
 	double icp_max_shift_m = 0.15, icp_max_shift_yaw_rad = mrpt::DEG2RAD(2.0);
 	double consistency_chi2 = 16.27;  //!< 3-dof chi2 gate (99.9 %) of the implied correction
 	double min_free_side_fraction = 0.5;  //!< of the query's wall hits that must come from the submap's free side
-	int max_cached_fields = 16;  //!< likelihood fields kept in memory
+	int max_cached_fields = 4;  //!< likelihood fields kept in memory
 	/** Threads that verify one keyframe's candidates at once, this one
 	 * included (0: one per hardware thread, at most max_candidates; 1: one
 	 * after the other). The candidates are independent: the closures are the
