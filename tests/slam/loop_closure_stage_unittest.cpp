@@ -210,13 +210,13 @@ std::string simulated(const hslam::testing::CTempDir& dir, const std::string& na
  * from room B every submap of room A is searched: the matcher finds room A
  * at the aliased pose with a passing score (measured 21 times), and
  * every one of those must be refused. */
-TEST(LoopClosureStage, IdenticalRoomIsNotTakenForTheOther)
+void checkIdenticalRoomIsNotTakenForTheOther(const std::string& extraOverride)
 {
 	hslam::testing::CTempDir dir;
 	const std::string run = simulated(dir, "twin-rooms");
 	auto pipeline = runStage(run, "lines+icp",
 							 {"loop_closure.min_window_xy_m=16", "loop_closure.max_window_xy_m=16",
-							  "loop_closure.overlap_distance_m=16"});
+							  "loop_closure.overlap_distance_m=16", extraOverride});
 	const auto truth = common::readTumFile(run + "/ground_truth.tum");
 	const auto& scans = pipeline->trajectory();
 	// rooms by the true position: A is x 0..8, B x 14..22, both y 0..6 (the corridor is north of them)
@@ -236,6 +236,18 @@ TEST(LoopClosureStage, IdenticalRoomIsNotTakenForTheOther)
 	EXPECT_GT(foundRoomA, 10u);  // the trap springs: measured 21
 	EXPECT_EQ(acceptedRoomA, 0u);
 	EXPECT_LT(corrected, online + 0.03);  // measured 0.015 -> 0.015
+}
+
+TEST(LoopClosureStage, IdenticalRoomIsNotTakenForTheOther)
+{
+	checkIdenticalRoomIsNotTakenForTheOther("loop_closure.ambiguity_thinned=false");
+}
+
+/** The second-peak search on the thinned query (an option, off by default)
+ * must refuse the aliased room as well. */
+TEST(LoopClosureStage, IdenticalRoomIsNotTakenForTheOtherWithTheThinnedSecondSearch)
+{
+	checkIdenticalRoomIsNotTakenForTheOther("loop_closure.ambiguity_thinned=true");
 }
 
 /** A large loop revisited several times: the 56 x 30 m ring corridor of the

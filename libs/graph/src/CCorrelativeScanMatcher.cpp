@@ -113,7 +113,7 @@ TCorrelativeMatch CCorrelativeScanMatcher::match(const TPointCloud2D& rawQuery, 
 	const double step = angularStep(res, farthestRange(query));
 	const int halfRotations = static_cast<int>(std::ceil(window.yaw_rad / step));
 	const int windowCells = static_cast<int>(std::ceil(window.xy_m / res));
-	const size_t thinTo = exclude ? 0 : static_cast<size_t>(m_options.search_min_points);
+	const size_t thinTo = exclude && !exclude->thinned_query ? 0 : static_cast<size_t>(m_options.search_min_points);
 	const auto searchQuery = adaptiveVoxelFilter(query, thinTo, m_options.search_max_voxel_m);
 	result.search_points = searchQuery.size();
 	const auto rotations = rotateQuery(m_grid, searchQuery, guess, halfRotations, step);
@@ -132,6 +132,7 @@ TCorrelativeMatch CCorrelativeScanMatcher::match(const TPointCloud2D& rawQuery, 
 	result.nodes_scored = found.nodesScored;
 	if (!found.found) return result;
 	result.found = true;
+	result.search_score = found.best.score;
 	result.pose = {guess.x + found.best.dx * res, guess.y + found.best.dy * res,
 				   rotations[static_cast<size_t>(found.best.rotation)].yaw_rad};
 	refine(query, step, result);

@@ -57,10 +57,12 @@ bool CLoopClosureDetector::checkUniqueness(const CCorrelativeScanMatcher& m, con
 {
 	const auto guess = relativePose(out.anchor_pose, out.query_pose_estimate);
 	// whether a second peak exists is all the test needs: the search stops at the first
-	const TSearchExclusion near{best.pose, m_options.ambiguity_xy_m, m_options.ambiguity_yaw_rad, true};
+	const bool thinned = m_options.ambiguity_thinned;
+	const TSearchExclusion near{best.pose, m_options.ambiguity_xy_m, m_options.ambiguity_yaw_rad, true, thinned};
 	const TSearchWindow wider{c.window.xy_m * m_options.ambiguity_window_factor, c.window.yaw_rad};
-	const auto second = m.match(m_queryPoints, guess, wider, &near, m_options.ambiguity_ratio * best.score,
-								EMatchOutput::pose_only);
+	const double scale = thinned ? best.search_score : best.score;
+	const auto second =
+		m.match(m_queryPoints, guess, wider, &near, m_options.ambiguity_ratio * scale, EMatchOutput::pose_only);
 	if (!second.found) return true;
 	out.second_score = second.score;
 	return reject(out, "ambiguous");

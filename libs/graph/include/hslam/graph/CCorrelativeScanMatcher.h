@@ -87,6 +87,9 @@ struct TSearchExclusion
 	/** Return the first pose found above the minimum score rather than the
 	 * best: enough to tell whether a second peak exists. */
 	bool first_above_min_score = false;
+	/** Score the thinned search query (as the search for the best does)
+	 * instead of every point; the bound is then on that query's score. */
+	bool thinned_query = false;
 };
 
 struct TCorrelativeMatch
@@ -100,6 +103,10 @@ struct TCorrelativeMatch
 	size_t search_points = 0;  //!< of those, scored by branch-and-bound (after thinning)
 	size_t rotations = 0;  //!< rotations in the window
 	size_t nodes_scored = 0;  //!< B&B nodes scored (cost measure)
+	/** Score of the best branch-and-bound leaf (the thinned search query on the
+	 * finest level, before refinement): the scale a second search with
+	 * TSearchExclusion::thinned_query compares against. */
+	double search_score = 0;
 	double angle_step_rad = 0;  //!< rotation step of the search (for covarianceOf)
 };
 

@@ -85,6 +85,7 @@ struct TLoopClosureOptions
 	 * when the graph's uncertainty is understated) must make the one inside
 	 * ambiguous, not unique. */
 	double ambiguity_window_factor = 1.5;
+	bool ambiguity_thinned = false;  //!< the second-peak search scores the thinned search query
 	double min_icp_goodness = 0.7;
 	double icp_max_shift_m = 0.15, icp_max_shift_yaw_rad = mrpt::DEG2RAD(2.0);
 	double consistency_chi2 = 16.27;  //!< 3-dof chi2 gate (99.9 %) of the implied correction
@@ -124,6 +125,7 @@ struct TLoopClosureOptions
 		v.real("ambiguity_ratio", ambiguity_ratio, 0.0, 1.0);
 		v.real("ambiguity_xy_m", ambiguity_xy_m, 0.0, 100.0);
 		v.real("ambiguity_window_factor", ambiguity_window_factor, 1.0, 10.0);
+		v.flag("ambiguity_thinned", ambiguity_thinned);
 		v.degrees("ambiguity_yaw_deg", ambiguity_yaw_rad, 0.0, 180.0);
 		v.real("min_icp_goodness", min_icp_goodness, 0.0, 1.0);
 		v.real("icp_max_shift_m", icp_max_shift_m, 0.0, 10.0);
