@@ -95,3 +95,32 @@ TEST(CorrelativeScanMatcher, SecondPeakFoundOutsideAnExclusion)
 	EXPECT_GT(second.score, 0.6);
 	EXPECT_GT(std::abs(mrpt::math::wrapToPi(second.pose.phi - best.pose.phi)), mrpt::DEG2RAD(10.0));
 }
+
+TEST(CorrelativeScanMatcher, ThinnedSecondSearchFindsThePeakOnTheSearchQuery)
+{
+	// [loop_closure] ambiguity_thinned: the second search scores the thinned
+	// query against the best leaf's score on that same query
+	std::mt19937_64 rng(9);
+	hslam::sim::CWorld w;
+	addBox(w, -4, -2, 4, 2);
+	CCorrelativeScanMatcher matcher;
+	const TPose2D robot{0, 0, 0};
+	auto reference = scanPoints(w, robot, rng);
+	const auto back = transformPoints(scanPoints(w, {0, 0, M_PI}, rng), {0, 0, M_PI});
+	reference.insert(reference.end(), back.begin(), back.end());
+	matcher.setReference(reference);
+	const auto query = scanPoints(w, robot, rng);
+	const auto best = matcher.match(query, robot, {0.3, M_PI});
+	ASSERT_TRUE(best.found);
+	EXPECT_GT(best.search_score, 0.6);
+	EXPECT_LE(best.search_score, 1.0);
+	TSearchExclusion ex{best.pose, 0.5, mrpt::DEG2RAD(10.0), true, true};
+	const auto second = matcher.match(query, robot, {0.3, M_PI}, &ex, 0.75 * best.search_score);
+	ASSERT_TRUE(second.found);
+	EXPECT_LT(second.search_points, second.query_points);  // thinned, as the first search was
+	EXPECT_EQ(second.search_points, best.search_points);
+	EXPECT_GT(std::abs(mrpt::math::wrapToPi(second.pose.phi - best.pose.phi)), mrpt::DEG2RAD(10.0));
+	// every point, as without the option: no thinning
+	ex.thinned_query = false;
+	EXPECT_EQ(matcher.match(query, robot, {0.3, M_PI}, &ex, 0.75 * best.score).search_points, best.query_points);
+}

@@ -194,6 +194,8 @@ TEST(LoopClosureStage, AliasedPlacesAreNotClosed)
 	}
 }
 
+namespace
+{
 /** Simulates config_ini/sim-<name>.ini into `dir` and returns the run's folder. */
 std::string simulated(const hslam::testing::CTempDir& dir, const std::string& name)
 {
@@ -237,6 +239,7 @@ void checkIdenticalRoomIsNotTakenForTheOther(const std::string& extraOverride)
 	EXPECT_EQ(acceptedRoomA, 0u);
 	EXPECT_LT(corrected, online + 0.03);  // measured 0.015 -> 0.015
 }
+}  // namespace
 
 TEST(LoopClosureStage, IdenticalRoomIsNotTakenForTheOther)
 {
