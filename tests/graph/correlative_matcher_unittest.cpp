@@ -24,6 +24,22 @@ TPointCloud2D roomReference(const hslam::sim::CWorld& world, std::mt19937_64& rn
 	}
 	return ref;
 }
+
+/** A room mirrored by a half turn: the query (a scan at the origin) fits at
+ * its pose and rotated by 180 deg. */
+std::pair<CCorrelativeScanMatcher, TPointCloud2D> mirroredRoom()
+{
+	std::mt19937_64 rng(9);
+	hslam::sim::CWorld w;
+	addBox(w, -4, -2, 4, 2);
+	CCorrelativeScanMatcher matcher;
+	const TPose2D robot{0, 0, 0};
+	auto reference = scanPoints(w, robot, rng);
+	const auto back = transformPoints(scanPoints(w, {0, 0, M_PI}, rng), {0, 0, M_PI});
+	reference.insert(reference.end(), back.begin(), back.end());
+	matcher.setReference(reference);
+	return {std::move(matcher), scanPoints(w, robot, rng)};
+}
 }  // namespace
 
 TEST(CorrelativeScanMatcher, RecoversKnownOffsetOf80cmAnd20deg)
@@ -76,17 +92,8 @@ TEST(CorrelativeScanMatcher, NoMatchOutsideTheWindowOrInAnotherPlace)
 
 TEST(CorrelativeScanMatcher, SecondPeakFoundOutsideAnExclusion)
 {
-	// a room mirrored by a half turn: the scan fits at its pose and rotated by 180 deg
-	std::mt19937_64 rng(9);
-	hslam::sim::CWorld w;
-	addBox(w, -4, -2, 4, 2);
-	CCorrelativeScanMatcher matcher;
+	const auto [matcher, query] = mirroredRoom();
 	const TPose2D robot{0, 0, 0};
-	auto reference = scanPoints(w, robot, rng);
-	const auto back = transformPoints(scanPoints(w, {0, 0, M_PI}, rng), {0, 0, M_PI});
-	reference.insert(reference.end(), back.begin(), back.end());
-	matcher.setReference(reference);
-	const auto query = scanPoints(w, robot, rng);
 	const auto best = matcher.match(query, robot, {0.3, M_PI});
 	ASSERT_TRUE(best.found);
 	TSearchExclusion ex{best.pose, 0.5, mrpt::DEG2RAD(10.0)};
@@ -100,16 +107,8 @@ TEST(CorrelativeScanMatcher, ThinnedSecondSearchFindsThePeakOnTheSearchQuery)
 {
 	// [loop_closure] ambiguity_thinned: the second search scores the thinned
 	// query against the best leaf's score on that same query
-	std::mt19937_64 rng(9);
-	hslam::sim::CWorld w;
-	addBox(w, -4, -2, 4, 2);
-	CCorrelativeScanMatcher matcher;
+	const auto [matcher, query] = mirroredRoom();
 	const TPose2D robot{0, 0, 0};
-	auto reference = scanPoints(w, robot, rng);
-	const auto back = transformPoints(scanPoints(w, {0, 0, M_PI}, rng), {0, 0, M_PI});
-	reference.insert(reference.end(), back.begin(), back.end());
-	matcher.setReference(reference);
-	const auto query = scanPoints(w, robot, rng);
 	const auto best = matcher.match(query, robot, {0.3, M_PI});
 	ASSERT_TRUE(best.found);
 	EXPECT_GT(best.search_score, 0.6);
