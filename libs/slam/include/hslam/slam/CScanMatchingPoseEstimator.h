@@ -44,6 +44,7 @@
 #include <hslam/matching/CLocalPointMap.h>
 #include <hslam/matching/CPointToLineIcp.h>
 #include <hslam/matching/CLineScanMatcher.h>
+#include <hslam/slam/CGapSearch.h>
 #include <hslam/slam/CMotionPrior.h>
 #include <hslam/slam/CPoseEstimator.h>
 
@@ -159,6 +160,12 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	std::optional<matching::TPoseMatch> runPointToLineIcp(const common::TRangeData& scan,
 														   const std::vector<mrpt::poses::CPose2D>& seedsWorld);
 	void addKeyframeIfDue(const common::TRangeData& scan);
+	/** After a gap of unknown motion, a match that is not good or fits
+	 * poorly is retried from the gap search's pose; the better fit is kept. */
+	void recoverAfterGap(const matching::TLineScanFrame& frame, const common::TRangeData& scan,
+						 std::optional<matching::TPoseMatch>& icpMatch);
+	/** After a gap of unknown motion: the gap search's pose of `frame` (world), if any. */
+	std::optional<mrpt::poses::CPose2D> gapSearchSeed(const matching::TLineScanFrame& frame);
 	/** Updates the filter with `match`; `refusedTrack`, when set, is the
 	 * refused-match seed's result competing with it, which the motion prior
 	 * then counts as another refusal instead of the match's confirmation. */
@@ -186,6 +193,7 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	matching::CLocalPointMap m_localMap;  //!< ...the local map of the window around the robot...
 	matching::CPointToLineIcp m_pointToLine;  //!< ...and the matcher
 	CMotionPrior m_motion;
+	CGapSearch m_gapSearch;  //!< wide search for the first match after a gap ([gap_search])
 	fusion::CPoseUKF m_ukf;
 	fusion::CAdaptiveMeasurementNoise m_lineNoise, m_icpNoise;
 	common::CStageTimer& m_timer;
@@ -195,6 +203,8 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	mrpt::poses::CPose2D m_sinceMatch;  //!< odometry since the last matched scan (its robot frame)
 	mrpt::poses::CPose2D m_sinceIcp;  //!< odometry since the last ICP match
 	Eigen::Matrix3d m_sinceMatchCov = Eigen::Matrix3d::Zero();
+	/** Sum of the non-odometry priors' covariances since the last match (the gap search's window). */
+	Eigen::Matrix3d m_priorCovSinceMatch = Eigen::Matrix3d::Zero();
 	bool m_gapVelocityMeasured = false;  //!< every such prior since the last match was velocity_measured
 	bool m_gapSinceMatch = false;  //!< the prior was not odometry since the last match: match (and ICP) now
 	double m_lastIcp_s = 0;  //!< time of the last ICP match

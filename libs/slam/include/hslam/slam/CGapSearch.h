@@ -1,0 +1,90 @@
+/* hslam: a wide search for the first match after an odometry gap of
+ * unknown motion (issue 12, "Recovery": after a gap, search wider before
+ * accepting).
+ *
+ * Without odometry the front-end predicts the motion with a constant
+ * velocity, which at the start of a log (or after a stop) is zero and whose
+ * uncertainty grows with the gap (CMotionPrior cv_*). ICP converges only
+ * within about half a metre and, with its restarts, 15-30 deg of its seed;
+ * csail cut at entry 500 starts with a 1.2 m, 36 deg step of unknown motion,
+ * and the first match settled 40 deg off (0.9 m error for 7 s, ATE 0.246 m).
+ *
+ * This search is correlative scan matching with branch-and-bound
+ * (graph::CCorrelativeScanMatcher, the loop-closure back-end's matcher) of
+ * the scan against the last matched scan, over the constant-velocity
+ * prior's window_sigmas-sigma window (capped), when that window is wider
+ * than ICP's basin. Its best pose is one more ICP seed; the seeds' fit
+ * decides (CScanMatchingPoseEstimator::runIcp), so a search that lands in
+ * the wrong place of a symmetric room loses to a prediction that fits
+ * better. Both scans are cut at max_range_m so the likelihood field stays
+ * small. No I/O. */
+#pragma once
+
+#include <hslam/graph/CCorrelativeScanMatcher.h>
+
+#include <Eigen/Core>
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <optional>
+
+namespace hslam::slam
+{
+struct TGapSearchOptions
+{
+	bool enabled = true;
+	double window_sigmas = 3;  //!< half-width of the window in prior standard deviations
+	double max_window_xy_m = 2;  //!< the window's half-width is capped here (m)...
+	double max_window_yaw_rad = 60.0 * M_PI / 180.0;  //!< ...and here (rad)
+	/** No search when the window is within both (ICP's basin and its restarts cover it). */
+	double min_window_xy_m = 0.5;
+	double min_window_yaw_rad = 15.0 * M_PI / 180.0;
+	double max_range_m = 20;  //!< points farther from the scanner are left out of the search
+	double resolution_m = 0.1;  //!< cell of the likelihood field
+	double kernel_sigma_m = 0.1;  //!< its blur around each reference point
+	double min_score = 0.2;  //!< mean likelihood below which the search gives no seed
+	/** ICP from the searched pose replaces the first match only if it fits
+	 * the keyframes ([icp] seed_fit_sigma_m) at least this much better. */
+	double min_fit_gain = 0.1;
+
+	template <class V>
+	void visit(V& v)
+	{
+		v.flag("enabled", enabled);
+		v.real("window_sigmas", window_sigmas, 0.5, 10.0);
+		v.real("max_window_xy_m", max_window_xy_m, 0.0, 20.0);
+		v.degrees("max_window_yaw_deg", max_window_yaw_rad, 0.0, 180.0);
+		v.real("min_window_xy_m", min_window_xy_m, 0.0, 20.0);
+		v.degrees("min_window_yaw_deg", min_window_yaw_rad, 0.0, 180.0);
+		v.real("max_range_m", max_range_m, 1.0, 200.0);
+		v.real("resolution_m", resolution_m, 0.01, 1.0);
+		v.real("kernel_sigma_m", kernel_sigma_m, 0.005, 1.0);
+		v.real("min_score", min_score, 0.0, 1.0);
+		v.real("min_fit_gain", min_fit_gain, 0.0, 1.0);
+	}
+};
+
+class CGapSearch
+{
+   public:
+	explicit CGapSearch(const TGapSearchOptions& options = {}) : m_options(options) {}
+	const TGapSearchOptions& options() const { return m_options; }
+
+	/** The window (half-widths) for a prior of covariance `motionCov`
+	 * (x, y, yaw of the motion since the last match); nullopt when it is
+	 * within ICP's basin or the search is off. */
+	std::optional<graph::TSearchWindow> windowFor(const Eigen::Matrix3d& motionCov) const;
+
+	/** Pose of the current scan (robot-frame points `scan`) relative to the
+	 * previous one (robot-frame points `previous`), best in `window` around
+	 * `guess` (the predicted relative motion); nullopt if nothing scores
+	 * min_score. */
+	std::optional<mrpt::poses::CPose2D> search(const mrpt::maps::CSimplePointsMap& previous,
+											   const mrpt::maps::CSimplePointsMap& scan, const mrpt::poses::CPose2D& guess,
+											   const graph::TSearchWindow& window) const;
+
+   private:
+	TGapSearchOptions m_options;
+};
+
+}  // namespace hslam::slam

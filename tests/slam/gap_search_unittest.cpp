@@ -1,0 +1,82 @@
+/* CGapSearch: the wide search for the first match after an odometry gap of
+ * unknown motion (issue 12, "Recovery"). Hand-made cases: an L-shaped room
+ * seen from two poses 1.2 m and 36 deg apart (csail cut at entry 500 starts
+ * with such a step), and the window rule. */
+#include <hslam/benchdata/synthetic_scan.h>
+#include <hslam/slam/CGapSearch.h>
+
+#include <gtest/gtest.h>
+#include <mrpt/math/wrap2pi.h>
+
+#include <cmath>
+
+using namespace hslam;
+
+namespace
+{
+/** An L-shaped room (no symmetry) with a pillar, 10 x 8 m. */
+std::vector<benchdata::TWall> lRoom()
+{
+	const std::vector<mrpt::math::TPoint2D> c{{0, 0}, {10, 0}, {10, 4}, {6, 4}, {6, 8}, {0, 8}};
+	std::vector<benchdata::TWall> walls;
+	for (size_t i = 0; i < c.size(); ++i) walls.push_back({c[i], c[(i + 1) % c.size()], 0.01});
+	walls.push_back({{3, 3}, {3.4, 3}, 0.01});
+	walls.push_back({{3.4, 3}, {3.4, 3.4}, 0.01});
+	walls.push_back({{3.4, 3.4}, {3, 3.4}, 0.01});
+	walls.push_back({{3, 3.4}, {3, 3}, 0.01});
+	return walls;
+}
+
+/** The scan's valid returns in the robot frame. */
+mrpt::maps::CSimplePointsMap scanFrom(const mrpt::poses::CPose2D& pose, uint32_t seed)
+{
+	benchdata::TScanLayout layout;
+	layout.beams = 361;
+	layout.max_range_m = 30;
+	const auto sim = benchdata::simulateScan(lRoom(), pose, layout, seed);
+	mrpt::maps::CSimplePointsMap points;
+	points.insertObservation(sim.scan);
+	return points;
+}
+}  // namespace
+
+TEST(GapSearch, FindsAStepOfUnknownMotionFarOutsideIcpsBasin)
+{
+	const mrpt::poses::CPose2D first(2, 1.5, mrpt::DEG2RAD(40)), second(2.9, 2.3, mrpt::DEG2RAD(76));
+	const mrpt::poses::CPose2D truth = second - first;  // 1.20 m, 36 deg
+	ASSERT_NEAR(truth.norm(), 1.2, 0.01);
+	slam::CGapSearch search;
+	const auto window = search.windowFor(Eigen::Vector3d(0.36, 0.36, std::pow(mrpt::DEG2RAD(35.0), 2)).asDiagonal());
+	ASSERT_TRUE(window.has_value());
+	EXPECT_DOUBLE_EQ(window->xy_m, 1.8);  // 3 sigma of 0.6 m
+	EXPECT_DOUBLE_EQ(window->yaw_rad, mrpt::DEG2RAD(60.0));  // 3 x 35 deg, capped
+	// the prediction is "no motion", as at the start of a log
+	const auto found = search.search(scanFrom(first, 1), scanFrom(second, 2), mrpt::poses::CPose2D(), *window);
+	ASSERT_TRUE(found.has_value());
+	EXPECT_LT(found->distanceTo(truth), 0.1) << found->asString();
+	EXPECT_LT(std::abs(mrpt::math::wrapToPi(found->phi() - truth.phi())), mrpt::DEG2RAD(2.0));
+}
+
+TEST(GapSearch, NoSearchWhereIcpsBasinCoversTheWindowOrWhenOff)
+{
+	slam::CGapSearch search;
+	// a constant-velocity prior over 0.1 s: 0.15 m, 8 deg -> within 0.5 m and 15 deg at 3 sigma
+	const Eigen::Matrix3d small = Eigen::Vector3d(0.0225, 0.0225, std::pow(mrpt::DEG2RAD(8.0) / 3.0, 2)).asDiagonal();
+	EXPECT_FALSE(search.windowFor(small).has_value());
+	// a wide rotation alone is enough to search
+	const Eigen::Matrix3d turn = Eigen::Vector3d(0.0225, 0.0225, std::pow(mrpt::DEG2RAD(10.0), 2)).asDiagonal();
+	ASSERT_TRUE(search.windowFor(turn).has_value());
+	EXPECT_NEAR(search.windowFor(turn)->yaw_rad, mrpt::DEG2RAD(30.0), 1e-12);
+	slam::TGapSearchOptions off;
+	off.enabled = false;
+	EXPECT_FALSE(slam::CGapSearch(off).windowFor(turn).has_value());
+}
+
+TEST(GapSearch, GivesNoSeedWhenTheScansDoNotOverlap)
+{
+	slam::CGapSearch search;
+	const graph::TSearchWindow window{1.0, mrpt::DEG2RAD(30.0)};
+	mrpt::maps::CSimplePointsMap far;  // a wall 25 m behind the search's range
+	for (int i = 0; i < 50; ++i) far.insertPoint(25.0f, -2.5f + 0.1f * static_cast<float>(i));
+	EXPECT_FALSE(search.search(far, scanFrom(mrpt::poses::CPose2D(2, 1.5, 0), 3), mrpt::poses::CPose2D(), window));
+}
