@@ -72,11 +72,21 @@ TEST(GapSearch, NoSearchWhereIcpsBasinCoversTheWindowOrWhenOff)
 	EXPECT_FALSE(slam::CGapSearch(off).windowFor(turn).has_value());
 }
 
-TEST(GapSearch, GivesNoSeedWhenTheScansDoNotOverlap)
+TEST(GapSearch, PointsBeyondItsRangeAreLeftOut)
 {
-	slam::CGapSearch search;
 	const graph::TSearchWindow window{1.0, mrpt::DEG2RAD(30.0)};
-	mrpt::maps::CSimplePointsMap far;  // a wall 25 m behind the search's range
-	for (int i = 0; i < 50; ++i) far.insertPoint(25.0f, -2.5f + 0.1f * static_cast<float>(i));
-	EXPECT_FALSE(search.search(far, scanFrom(mrpt::poses::CPose2D(2, 1.5, 0), 3), mrpt::poses::CPose2D(), window));
+	mrpt::maps::CSimplePointsMap far;  // a wall 25 m ahead, seen from two poses 0.5 m apart
+	mrpt::maps::CSimplePointsMap nearer;
+	for (int i = 0; i < 50; ++i)
+	{
+		far.insertPoint(25.0f, -2.5f + 0.1f * static_cast<float>(i));
+		nearer.insertPoint(24.5f, -2.5f + 0.1f * static_cast<float>(i));
+	}
+	// beyond max_range_m (20 m) nothing is left to search with
+	EXPECT_FALSE(slam::CGapSearch().search(far, nearer, mrpt::poses::CPose2D(), window).has_value());
+	slam::TGapSearchOptions longer;
+	longer.max_range_m = 30;
+	const auto found = slam::CGapSearch(longer).search(far, nearer, mrpt::poses::CPose2D(), window);
+	ASSERT_TRUE(found.has_value());
+	EXPECT_NEAR(found->x(), 0.5, 0.1);  // the robot moved 0.5 m towards the wall
 }
