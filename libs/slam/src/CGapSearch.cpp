@@ -10,16 +10,13 @@ namespace hslam::slam
 {
 namespace
 {
-/** The points of `map` within range_m of its origin (the scanner). */
-graph::TPointCloud2D withinRange(const mrpt::maps::CSimplePointsMap& map, double range_m)
+graph::TPointCloud2D toCloud(const mrpt::maps::CSimplePointsMap& map)
 {
 	const auto& xs = map.getPointsBufferRef_x();
 	const auto& ys = map.getPointsBufferRef_y();
 	graph::TPointCloud2D out;
 	out.reserve(xs.size());
-	const float r2 = static_cast<float>(range_m * range_m);
-	for (size_t i = 0; i < xs.size(); ++i)
-		if (xs[i] * xs[i] + ys[i] * ys[i] <= r2) out.emplace_back(xs[i], ys[i]);
+	for (size_t i = 0; i < xs.size(); ++i) out.emplace_back(xs[i], ys[i]);
 	return out;
 }
 }  // namespace
@@ -42,18 +39,18 @@ std::optional<mrpt::poses::CPose2D> CGapSearch::search(const mrpt::maps::CSimple
 														const mrpt::poses::CPose2D& guess,
 														const graph::TSearchWindow& window) const
 {
-	const graph::TPointCloud2D reference = withinRange(previous, m_options.max_range_m);
-	const graph::TPointCloud2D query = withinRange(scan, m_options.max_range_m);
-	if (reference.size() < 10 || query.size() < 10) return std::nullopt;
 	graph::TCorrelativeMatcherOptions o;
 	o.resolution_m = m_options.resolution_m;
 	o.kernel_sigma_m = m_options.kernel_sigma_m;
 	o.min_score = m_options.min_score;
+	o.max_query_range_m = m_options.max_range_m;  // both scans lie in their scanner's frame: one range rule
 	graph::CCorrelativeScanMatcher matcher(o);
+	const graph::TPointCloud2D reference = matcher.filteredQuery(toCloud(previous));
+	if (reference.size() < 10) return std::nullopt;
 	matcher.setReference(reference);
 	const graph::TCorrelativeMatch m =
-		matcher.match(query, guess.asTPose(), window, nullptr, -1, graph::EMatchOutput::pose_only);
-	if (!m.found) return std::nullopt;
+		matcher.match(toCloud(scan), guess.asTPose(), window, nullptr, -1, graph::EMatchOutput::pose_only);
+	if (m.query_points < 10 || !m.found) return std::nullopt;
 	return mrpt::poses::CPose2D(m.pose);
 }
 

@@ -176,9 +176,11 @@ class CCorrelativeScanMatcher
 	double scoreAt(const TPointCloud2D& query, const mrpt::math::TPose2D& pose, double* hitFraction = nullptr) const;
 
 	const TOptions& options() const { return m_options; }
+	/** The points within max_query_range_m of the origin (all if 0): what
+	 * match() keeps of a query. */
+	TPointCloud2D filteredQuery(const TPointCloud2D& query) const;
 
    private:
-	TPointCloud2D filteredQuery(const TPointCloud2D& query) const;
 	void refine(const TPointCloud2D& query, double angleStep_rad, TCorrelativeMatch& m) const;
 	Eigen::Matrix3d scoreSurfaceCovariance(const TPointCloud2D& query, const mrpt::math::TPose2D& pose,
 										   double angleStep_rad) const;
