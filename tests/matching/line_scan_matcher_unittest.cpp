@@ -125,4 +125,53 @@ TEST(LineScanMatcher, OdometryFarOffMakesTheMatchWeak)
 	EXPECT_LT(m.score, 0.9);
 }
 
+/** A corridor 2.5 m wide whose end wall, 18 m ahead, is the only line
+ * across its axis: far, short, sampled by eight beams, and rough (3 cm). */
+matching::TLineScanFrame corridorFrameAt(const CPose2D& pose, uint32_t seed)
+{
+	const std::vector<benchdata::TWall> walls{
+		{{-5, -1.25}, {18, -1.25}, 0.01}, {{-5, 1.25}, {18, 1.25}, 0.01}, {{18, -1.25}, {18, 1.25}, 0.03}};
+	benchdata::TScanLayout layout;
+	layout.max_range_m = 30;
+	const auto sim = benchdata::simulateScan(walls, pose, layout, seed);
+	mrpt::config::CConfigFileMemory cfg;
+	const auto extractor = features::createLineExtractor("derivative", cfg, "line_extraction_derivative");
+	matching::TLineScanFrame f;
+	f.lines = extractor->extract(sim.scan);
+	f.points = hslam::common::makeRangeData(sim.scan).points.xy;
+	f.pointsMap = matching::toPointsMap(f.points);
+	return f;
+}
+
+TEST(LineScanMatcher, AnAxisOnlyAFarLineConstrainsIsClaimedAsLooseAsThatLine)
+{
+	// One line alone constrains the axis, so the residuals say nothing about
+	// it: the claimed std fell to the 0.01 m floor while the matches were
+	// several cm off. Its own fit's rho variance tells (the default).
+	matching::CLineScanMatcher::TOptions residualsOnly;
+	residualsOnly.rho_variance_covariance = false;
+	const CPose2D truth(0.16, 0, 0);
+	int matched = 0;
+	double claimedVar[2] = {0, 0}, error2 = 0;
+	for (uint32_t seed = 0; seed < 80; ++seed)
+	{
+		const auto a = corridorFrameAt(CPose2D(0, 0.3, 0), 100 + 2 * seed);
+		const auto b = corridorFrameAt(CPose2D(0, 0.3, 0) + truth, 101 + 2 * seed);
+		const auto withFit = matching::CLineScanMatcher().match(a, b, truth, odometryCov());
+		const auto residual = matching::CLineScanMatcher(residualsOnly).match(a, b, truth, odometryCov());
+		if (withFit.method != "lines" || residual.method != "lines") continue;  // the point fallback: not this rule
+		++matched;
+		EXPECT_NEAR(withFit.pose.x(), residual.pose.x(), 1e-12);  // the same estimate, only its claim differs
+		error2 += std::pow(withFit.pose.x() - truth.x(), 2);
+		claimedVar[0] += withFit.covariance(0, 0), claimedVar[1] += residual.covariance(0, 0);
+	}
+	ASSERT_GE(matched, 30);
+	const double rmsError = std::sqrt(error2 / matched), withFitStd = std::sqrt(claimedVar[0] / matched),
+				 residualStd = std::sqrt(claimedVar[1] / matched);
+	std::cout << matched << " line matches: axis error RMS " << rmsError << " m, claimed std " << withFitStd
+			  << " m (residuals only " << residualStd << " m)\n";
+	EXPECT_GT(withFitStd, 0.9 * rmsError);
+	EXPECT_LT(residualStd, 0.7 * rmsError);
+}
+
 }  // namespace

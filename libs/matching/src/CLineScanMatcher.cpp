@@ -28,6 +28,32 @@ double alignedCurrentRho(double alphaPrev, double alphaCur, double rhoCur, doubl
 	return std::abs(wrapToPi(alphaPrev - alphaCur - phi)) > M_PI / 2 ? -rhoCur : rhoCur;
 }
 
+/** Variance of b = rho_prev - rho_cur of one pair: the two lines' own TLS
+ * fit variances (TLineSegment::var_rho_m2), each floored by floor2. */
+double offsetVariance(const features::TLineSegment& prev, const features::TLineSegment& cur, double floor2)
+{
+	return std::max(prev.var_rho_m2, floor2) + std::max(cur.var_rho_m2, floor2);
+}
+
+/** Covariance of t = H^-1 sum w_i n_i b_i (eq. 72) that the variances of the
+ * b_i alone cause: H^-1 (sum w_i^2 var(b_i) n_i n_i^T) H^-1; with a loose
+ * direction (not fully constrained), only along the constrained one, v. */
+Eigen::Matrix2d propagatedOffsetCovariance(const std::vector<Eigen::Vector2d>& normals,
+										   const std::vector<double>& weights, const std::vector<double>& variances,
+										   const Eigen::Matrix2d& H, bool fullyConstrained, const Eigen::Vector2d& v,
+										   double lambda)
+{
+	Eigen::Matrix2d M = Eigen::Matrix2d::Zero();
+	for (size_t i = 0; i < normals.size(); ++i)
+		M += weights[i] * weights[i] * variances[i] * normals[i] * normals[i].transpose();
+	if (fullyConstrained)
+	{
+		const Eigen::Matrix2d Hi = H.inverse();
+		return Hi * M * Hi;
+	}
+	return v * v.transpose() * (v.dot(M * v) / std::max(lambda * lambda, 1e-18));
+}
+
 double effectiveCount(const std::vector<double>& normalisedWeights)
 {
 	double sq = 0;
@@ -85,7 +111,8 @@ CLineScanMatcher::TTranslation CLineScanMatcher::estimateLineTranslation(
 	Eigen::Matrix2d H = Eigen::Matrix2d::Zero();
 	Eigen::Vector2d g = Eigen::Vector2d::Zero();
 	std::vector<Eigen::Vector2d> normals;
-	std::vector<double> offsets;
+	std::vector<double> offsets, variances;
+	const double floor2 = m_options.min_translation_std_m * m_options.min_translation_std_m;
 	for (size_t i = 0; i < pairs.size(); ++i)
 	{
 		const auto& lp = prev.lines[pairs[i].previous];
@@ -96,6 +123,7 @@ CLineScanMatcher::TTranslation CLineScanMatcher::estimateLineTranslation(
 		g += rot.weights[i] * n * b;
 		normals.push_back(n);
 		offsets.push_back(b);
+		variances.push_back(offsetVariance(lp, lc, floor2));
 	}
 	TTranslation tr;
 	Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(H);  // weights sum to 1
@@ -110,14 +138,16 @@ CLineScanMatcher::TTranslation CLineScanMatcher::estimateLineTranslation(
 		tr.t = V.col(0) * V.col(0).dot(odometryT) + V.col(1) * (V.col(1).dot(g) / std::max(lambda[1], 1e-9));
 	double residual2 = 0;
 	for (size_t i = 0; i < normals.size(); ++i) residual2 += rot.weights[i] * std::pow(normals[i].dot(tr.t) - offsets[i], 2);
-	const double sigma2 =
-		std::max(residual2, m_options.min_translation_std_m * m_options.min_translation_std_m) /
-		std::max(1.0, effectiveCount(rot.weights));
+	const double sigma2 = std::max(residual2, floor2) / std::max(1.0, effectiveCount(rot.weights));
 	if (tr.fullyConstrained)
 		tr.cov = sigma2 * H.inverse();
 	else
 		tr.cov = V.col(0) * V.col(0).transpose() * V.col(0).dot(odometryTCov * V.col(0)) +
 				 V.col(1) * V.col(1).transpose() * sigma2 / std::max(lambda[1], 1e-9);
+	// The residuals cannot tell how well a direction that one line alone
+	// constrains is measured (its residual is zero): the lines' own fits can.
+	if (m_options.rho_variance_covariance)
+		tr.cov += propagatedOffsetCovariance(normals, rot.weights, variances, H, tr.fullyConstrained, V.col(1), lambda[1]);
 	return tr;
 }
 

@@ -60,6 +60,13 @@ class CLineScanMatcher
 		double point_start_gate_m = 0.5;  //!< point fallback: first association gate
 		double point_end_gate_m = 0.1;  //!< point fallback: last association gate
 		int point_iterations = 8;
+		/** The translation's covariance also carries each paired line's own
+		 * rho variance (its TLS fit, TLineSegment::var_rho_m2, floored by
+		 * min_translation_std_m) through the least squares of eq. 72: a
+		 * direction that only a short, sparse or far line constrains is as
+		 * loose as that line's rho, whatever the residuals say (a corridor's
+		 * axis seen through a far end wall). */
+		bool rho_variance_covariance = true;
 
 		template <class V>
 		void visit(V& v)
@@ -75,6 +82,7 @@ class CLineScanMatcher
 			v.real("point_start_gate_m", point_start_gate_m, 0.01, 5.0);
 			v.real("point_end_gate_m", point_end_gate_m, 0.01, 5.0);
 			v.integer("point_iterations", point_iterations, 1, 100);
+			v.flag("rho_variance_covariance", rho_variance_covariance);
 		}
 	};
 
