@@ -27,9 +27,9 @@ std::vector<benchdata::TWall> room(double sigma)
 	return walls;
 }
 
-matching::TLineScanFrame frameAt(const CPose2D& pose, double sigma, uint32_t seed)
+/** The matcher's frame of a simulated scan: derivative lines and every point. */
+matching::TLineScanFrame frameOf(const benchdata::TSyntheticScan& sim)
 {
-	const auto sim = benchdata::simulateScan(room(sigma), pose, benchdata::TScanLayout{}, seed);
 	mrpt::config::CConfigFileMemory cfg;
 	const auto extractor = features::createLineExtractor("derivative", cfg, "line_extraction_derivative");
 	matching::TLineScanFrame f;
@@ -37,6 +37,11 @@ matching::TLineScanFrame frameAt(const CPose2D& pose, double sigma, uint32_t see
 	f.points = hslam::common::makeRangeData(sim.scan).points.xy;
 	f.pointsMap = matching::toPointsMap(f.points);
 	return f;
+}
+
+matching::TLineScanFrame frameAt(const CPose2D& pose, double sigma, uint32_t seed)
+{
+	return frameOf(benchdata::simulateScan(room(sigma), pose, benchdata::TScanLayout{}, seed));
 }
 
 struct TCase
@@ -133,14 +138,7 @@ matching::TLineScanFrame corridorFrameAt(const CPose2D& pose, uint32_t seed)
 		{{-5, -1.25}, {18, -1.25}, 0.01}, {{-5, 1.25}, {18, 1.25}, 0.01}, {{18, -1.25}, {18, 1.25}, 0.03}};
 	benchdata::TScanLayout layout;
 	layout.max_range_m = 30;
-	const auto sim = benchdata::simulateScan(walls, pose, layout, seed);
-	mrpt::config::CConfigFileMemory cfg;
-	const auto extractor = features::createLineExtractor("derivative", cfg, "line_extraction_derivative");
-	matching::TLineScanFrame f;
-	f.lines = extractor->extract(sim.scan);
-	f.points = hslam::common::makeRangeData(sim.scan).points.xy;
-	f.pointsMap = matching::toPointsMap(f.points);
-	return f;
+	return frameOf(benchdata::simulateScan(walls, pose, layout, seed));
 }
 
 TEST(LineScanMatcher, AnAxisOnlyAFarLineConstrainsIsClaimedAsLooseAsThatLine)

@@ -84,6 +84,12 @@ struct TPoseEstimationOptions
 	 * contradictedMatchSeed; the fit, [icp] seed_fit_sigma_m, decides), and
 	 * restart the filter there once the refusals declare a stall. */
 	bool seed_refused_matches = true;
+	/** icp and lines+icp with point ICP: an ICP match whose fit ([icp]
+	 * seed_fit_sigma_m) is more than this below the fit of the prediction
+	 * itself is not used (issue 12: a match that fits worse than the
+	 * prediction is never accepted); the line match stands in only if it
+	 * does not fit worse than the prediction either. Negative = off. */
+	double max_fit_loss_vs_prediction = 0.02;
 	/** icp_matcher = mrpt with [icp] engine = cached: an ICP restart's two
 	 * seeds (turned by +-k steps) are aligned on two threads at once; same
 	 * results, less wall time. */
@@ -108,6 +114,7 @@ struct TPoseEstimationOptions
 		v.degrees("standstill_max_deg", standstill_max_rad, 0.0, 360.0);
 		v.choice("icp_matcher", icp_matcher, {"mrpt", "point_to_line", "mrpt+point_to_line"});
 		v.flag("seed_refused_matches", seed_refused_matches);
+		v.real("max_fit_loss_vs_prediction", max_fit_loss_vs_prediction, -1.0, 1.0);
 		v.flag("parallel_restarts", parallel_restarts);
 		v.integer("max_match_points", max_match_points, 0, 1000000);
 	}

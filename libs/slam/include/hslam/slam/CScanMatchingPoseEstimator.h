@@ -143,6 +143,18 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	 * failed) and the method asks for ICP beside a usable line match. */
 	bool wantsIcp(const std::optional<matching::TPoseMatch>& lineMatch) const;
 	void matchAndFuse(matching::TLineScanFrame& frame, const common::TRangeData& scan, TPoseEstimate& estimate);
+	/** Fuses the ICP match, else the line match, unless the prediction fits
+	 * the keyframes better (max_fit_loss_vs_prediction). */
+	void fuseChosenMatch(const matching::TLineScanFrame& frame, const std::optional<matching::TPoseMatch>& lineMatch,
+						 std::optional<matching::TPoseMatch>& icpMatch, const matching::TPoseMatch* refusedTrack,
+						 TPoseEstimate& estimate);
+	/** Whether an ICP match fits the keyframes worse than the prediction
+	 * does, by more than max_fit_loss_vs_prediction (`predictionFit` gives
+	 * the prediction's fit). */
+	bool fitsWorseThanPrediction(const matching::TPoseMatch& match, const std::function<double()>& predictionFit) const;
+	/** The same for a line match (a pose relative to the cloned pose). */
+	bool lineFitsWorseThanPrediction(const matching::TPoseMatch& lineMatch, const matching::TLineScanFrame& frame,
+									 const std::function<double()>& predictionFit);
 	/** Restarts the filter where the refused matches put the robot when
 	 * they made the motion prior declare a stall (seed_refused_matches). */
 	void restartAtRefusedMatches(const TMotionPrior& prior, double t_s);
