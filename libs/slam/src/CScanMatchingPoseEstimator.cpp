@@ -383,8 +383,7 @@ void CScanMatchingPoseEstimator::fuse(const matching::TPoseMatch& match, bool re
 	estimate.match_nis = result.nis;
 }
 
-bool CScanMatchingPoseEstimator::fitsWorseThanPrediction(const matching::TPoseMatch& match,
-															 const std::function<double()>& predictionFit) const
+bool CScanMatchingPoseEstimator::fitsWorseThanPrediction(double fit, const std::function<double()>& predictionFit) const
 {
 	// The corridor with a 30 m scanner (stress matrix "far"): from a seed
 	// 2.5 cm off, ICP ended 0.58 m along the axis, where six far points 17-29
@@ -392,8 +391,8 @@ bool CScanMatchingPoseEstimator::fitsWorseThanPrediction(const matching::TPoseMa
 	// paired, while the near ones by a door recess moved 1 -> 5-8 cm off:
 	// more pairs, a worse fit (0.850; the prediction's about 0.9), a few cm
 	// of claimed std, NIS 49.9 under the gate of 50.
-	if (m_options.max_fit_loss_vs_prediction < 0 || !predictionFit || match.fit <= 0) return false;
-	return predictionFit() - match.fit > m_options.max_fit_loss_vs_prediction;
+	if (m_options.max_fit_loss_vs_prediction < 0 || !predictionFit || fit <= 0) return false;
+	return predictionFit() - fit > m_options.max_fit_loss_vs_prediction;
 }
 
 bool CScanMatchingPoseEstimator::lineFitsWorseThanPrediction(const matching::TPoseMatch& lineMatch,
@@ -401,10 +400,8 @@ bool CScanMatchingPoseEstimator::lineFitsWorseThanPrediction(const matching::TPo
 																 const std::function<double()>& predictionFit)
 {
 	const mrpt::poses::CPose2D pose = toPose(m_ukf.clonePose()) + lineMatch.pose;
-	matching::TPoseMatch asIcp = lineMatch;
-	asIcp.pose = pose;
-	asIcp.fit = icpForThisMatch().fit(m_keyframes.referenceIndex(pose), frame.pointsMap, pose);
-	return fitsWorseThanPrediction(asIcp, predictionFit);
+	return fitsWorseThanPrediction(icpForThisMatch().fit(m_keyframes.referenceIndex(pose), frame.pointsMap, pose),
+								   predictionFit);
 }
 
 bool CScanMatchingPoseEstimator::wantsIcp(const std::optional<matching::TPoseMatch>& lineMatch) const
@@ -481,7 +478,7 @@ void CScanMatchingPoseEstimator::fuseChosenMatch(const matching::TLineScanFrame&
 	const std::function<double()> fitOfPrediction = pointMap ? std::function<double()>(predictionFit) : nullptr;
 	// the prediction fits better than the ICP match: the line match stands in only if it does not fit worse either
 	const bool predictionFitsBetter = icpMatch && icpMatch->quality != EMatchQuality::failed &&
-									  fitsWorseThanPrediction(*icpMatch, fitOfPrediction);
+									  fitsWorseThanPrediction(icpMatch->fit, fitOfPrediction);
 	if (predictionFitsBetter) icpMatch->quality = EMatchQuality::failed;
 	if (icpMatch && icpMatch->quality != EMatchQuality::failed)
 		fuse(*icpMatch, false, m_icpNoise, estimate, refusedTrack, fitOfPrediction);

@@ -148,11 +148,12 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	void fuseChosenMatch(const matching::TLineScanFrame& frame, const std::optional<matching::TPoseMatch>& lineMatch,
 						 std::optional<matching::TPoseMatch>& icpMatch, const matching::TPoseMatch* refusedTrack,
 						 TPoseEstimate& estimate);
-	/** Whether an ICP match fits the keyframes worse than the prediction
-	 * does, by more than max_fit_loss_vs_prediction (`predictionFit` gives
-	 * the prediction's fit). */
-	bool fitsWorseThanPrediction(const matching::TPoseMatch& match, const std::function<double()>& predictionFit) const;
-	/** The same for a line match (a pose relative to the cloned pose). */
+	/** Whether a match fitting the keyframes with `fit` ([icp]
+	 * seed_fit_sigma_m; 0 = not computed) fits worse than the prediction,
+	 * by more than max_fit_loss_vs_prediction (`predictionFit` gives the
+	 * prediction's fit). */
+	bool fitsWorseThanPrediction(double fit, const std::function<double()>& predictionFit) const;
+	/** The same for a line match (a pose relative to the cloned pose), its fit computed here. */
 	bool lineFitsWorseThanPrediction(const matching::TPoseMatch& lineMatch, const matching::TLineScanFrame& frame,
 									 const std::function<double()>& predictionFit);
 	/** Restarts the filter where the refused matches put the robot when
