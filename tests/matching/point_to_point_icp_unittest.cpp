@@ -161,43 +161,6 @@ TEST(PointIndex2D, NearestAreExactFarFromTheCloudAndAcrossStrayFarPoints)
 	EXPECT_EQ(none.nearest(0.f, 0.f, 4, idx, d2), 0u);
 }
 
-TEST(PointIndex2D, BoundedNearestAreTheExactOnesWithinTheRadius)
-{
-	// a room's walls and queries inside and outside it: a query bounded at r
-	// returns exactly the unbounded answers that lie within r, so ICP's
-	// pairing (which discards farther points) is unchanged by the bound
-	auto& rng = mrpt::random::getRandomGenerator();
-	rng.randomize(13);
-	std::vector<float> xs, ys;
-	for (int i = 0; i < 120; ++i)
-	{
-		const float t = static_cast<float>(rng.drawUniform(-4, 4));
-		xs.push_back(t), ys.push_back(i % 2 ? 4.f : -4.f);
-		xs.push_back(i % 2 ? 4.f : -4.f), ys.push_back(t);
-	}
-	CPointIndex2D index;
-	index.build(xs, ys);
-	size_t partial = 0, empty = 0;
-	for (int q = 0; q < 400; ++q)
-	{
-		const float x = static_cast<float>(rng.drawUniform(-5, 5)), y = static_cast<float>(rng.drawUniform(-5, 5));
-		const float radius = static_cast<float>(rng.drawUniform(0.01, 1.0));
-		uint32_t all[6], bounded[6];
-		float allD2[6], boundedD2[6];
-		ASSERT_EQ(index.nearest(x, y, 6, all, allD2), 6u);
-		const size_t within = static_cast<size_t>(std::count_if(allD2, allD2 + 6, [&](float d2) { return d2 <= radius * radius; }));
-		ASSERT_EQ(index.nearest(x, y, 6, bounded, boundedD2, radius), within) << x << " " << y << " r " << radius;
-		for (size_t j = 0; j < within; ++j)
-		{
-			EXPECT_EQ(bounded[j], all[j]);
-			EXPECT_EQ(boundedD2[j], allD2[j]);
-		}
-		partial += within > 0 && within < 6, empty += within == 0;
-	}
-	EXPECT_GT(partial, 20u);  // both cases were really exercised
-	EXPECT_GT(empty, 50u);
-}
-
 TEST(PointToPointIcp, AgreesWithMrptClassicIcp)
 {
 	const auto world = room(0.04);

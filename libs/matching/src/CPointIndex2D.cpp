@@ -16,21 +16,17 @@ constexpr float kCell_m = 0.25f;
 /** Cells at most; a wider cloud (far stray returns) gets larger cells. */
 constexpr double kMaxCells = 1 << 22;
 
-/** The k nearest offered points within a distance, sorted by (distance, index). */
+/** The k nearest offered points, sorted by (distance, index). */
 class CKnnResult
 {
    public:
-	CKnnResult(size_t k, float max_distance2, uint32_t* indices, float* distances2)
-		: m_k(k), m_maxD2(max_distance2), m_idx(indices), m_d2(distances2)
-	{
-	}
+	CKnnResult(size_t k, uint32_t* indices, float* distances2) : m_k(k), m_idx(indices), m_d2(distances2) {}
 	size_t size() const { return m_count; }
 	bool full() const { return m_count == m_k; }
-	/** Squared distance beyond which no offered point can enter. */
-	float worst() const { return full() ? m_d2[m_k - 1] : m_maxD2; }
+	float worst() const { return full() ? m_d2[m_k - 1] : std::numeric_limits<float>::max(); }
 	void offer(float d2, uint32_t index)
 	{
-		if (d2 > m_maxD2 || (full() && !before(d2, index, m_d2[m_k - 1], m_idx[m_k - 1]))) return;
+		if (full() && !before(d2, index, m_d2[m_k - 1], m_idx[m_k - 1])) return;
 		size_t i = full() ? m_k - 1 : m_count++;
 		for (; i > 0 && before(d2, index, m_d2[i - 1], m_idx[i - 1]); --i) m_d2[i] = m_d2[i - 1], m_idx[i] = m_idx[i - 1];
 		m_d2[i] = d2, m_idx[i] = index;
@@ -39,7 +35,6 @@ class CKnnResult
    private:
 	static bool before(float d2, uint32_t i, float e2, uint32_t j) { return d2 < e2 || (d2 == e2 && i < j); }
 	size_t m_k, m_count = 0;
-	float m_maxD2;
 	uint32_t* m_idx;
 	float* m_d2;
 };
@@ -100,11 +95,13 @@ void CPointIndex2D::rebuildGrid()
 template <class Result>
 void CPointIndex2D::scanCell(int ix, int iy, float x, float y, Result& result) const
 {
-	// a cell wholly farther than the k-th point found (or the search radius) cannot add one
-	const float cx0 = m_x0 + static_cast<float>(ix) * m_cell_m, cy0 = m_y0 + static_cast<float>(iy) * m_cell_m;
-	const float ex = std::max(0.f, std::max(cx0 - x, x - (cx0 + m_cell_m)));
-	const float ey = std::max(0.f, std::max(cy0 - y, y - (cy0 + m_cell_m)));
-	if (ex * ex + ey * ey > result.worst()) return;
+	if (result.full())  // a cell wholly farther than the k-th point found cannot add one
+	{
+		const float cx0 = m_x0 + static_cast<float>(ix) * m_cell_m, cy0 = m_y0 + static_cast<float>(iy) * m_cell_m;
+		const float ex = std::max(0.f, std::max(cx0 - x, x - (cx0 + m_cell_m)));
+		const float ey = std::max(0.f, std::max(cy0 - y, y - (cy0 + m_cell_m)));
+		if (ex * ex + ey * ey > result.worst()) return;
+	}
 	const size_t c = static_cast<size_t>(iy) * static_cast<size_t>(m_width) + static_cast<size_t>(ix);
 	for (uint32_t s = m_cellStart[c], end = m_cellStart[c + 1]; s < end; ++s)
 	{
@@ -114,13 +111,11 @@ void CPointIndex2D::scanCell(int ix, int iy, float x, float y, Result& result) c
 	}
 }
 
-size_t CPointIndex2D::nearest(float x, float y, size_t k, uint32_t* indices, float* distances2,
-							   float max_distance_m) const
+size_t CPointIndex2D::nearest(float x, float y, size_t k, uint32_t* indices, float* distances2) const
 {
 	k = std::min<size_t>(k, 32);
 	if (k == 0 || m_width == 0) return 0;
-	const float maxD2 = max_distance_m < 1e18f ? max_distance_m * max_distance_m : std::numeric_limits<float>::max();
-	CKnnResult result(k, maxD2, indices, distances2);
+	CKnnResult result(k, indices, distances2);
 	// the query's cell, clamped to a range that keeps the ring arithmetic in int
 	const float fx = std::clamp((x - m_x0) * m_invCell, -1e6f, 1e6f), fy = std::clamp((y - m_y0) * m_invCell, -1e6f, 1e6f);
 	const int cx = static_cast<int>(std::floor(fx)), cy = static_cast<int>(std::floor(fy));
@@ -146,7 +141,7 @@ size_t CPointIndex2D::nearest(float x, float y, size_t k, uint32_t* indices, flo
 		const float reach = std::min(std::min(fx - static_cast<float>(cx - r), static_cast<float>(cx + r + 1) - fx),
 									 std::min(fy - static_cast<float>(cy - r), static_cast<float>(cy + r + 1) - fy)) *
 							m_cell_m;
-		if (reach > 0 && result.worst() <= reach * reach) break;
+		if (result.full() && reach > 0 && result.worst() <= reach * reach) break;
 	}
 	return result.size();
 }

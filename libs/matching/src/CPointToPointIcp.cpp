@@ -24,12 +24,8 @@ class CNeighbourCache
 
 	/** Nearest reference point of scan point i, now at (x, y): exact when
 	 * it is within limit_m; otherwise d2 may be any value >= limit_m^2 (the
-	 * point is unpaired either way). A query looks no farther than
-	 * search_m (>= limit_m at every call for this point): points beyond it
-	 * could never pair, and an unbounded query in unmapped space widens
-	 * until it finds k points metres away. */
-	uint32_t nearest(size_t i, float x, float y, float limit_m, float search_m, float& d2,
-					 CPointToPointIcp::TResult& stats)
+	 * point is unpaired either way). */
+	uint32_t nearest(size_t i, float x, float y, float limit_m, float& d2, CPointToPointIcp::TResult& stats)
 	{
 		if (m_radius[i] >= 0)
 		{
@@ -63,11 +59,10 @@ class CNeighbourCache
 		++stats.tree_queries;
 		float dist2[16];
 		const size_t k = std::min<size_t>(m_k, 16);
-		m_count[i] = m_ref.nearest(x, y, k, &m_idx[i * m_k], dist2, search_m);
+		m_count[i] = m_ref.nearest(x, y, k, &m_idx[i * m_k], dist2);
 		m_qx[i] = x, m_qy[i] = y;
-		// every point within m_radius of the query point is cached
-		m_radius[i] = m_count[i] < k ? search_m : std::sqrt(dist2[m_count[i] - 1]);
-		m_nearest[i] = m_count[i] > 0 ? std::sqrt(dist2[0]) : search_m;
+		m_radius[i] = m_count[i] < k ? std::numeric_limits<float>::max() : std::sqrt(dist2[m_count[i] - 1]);
+		m_nearest[i] = m_count[i] > 0 ? std::sqrt(dist2[0]) : std::numeric_limits<float>::max();
 		d2 = m_count[i] > 0 ? dist2[0] : std::numeric_limits<float>::max();
 		return m_count[i] > 0 ? m_idx[i * m_k] : 0;
 	}
@@ -95,12 +90,10 @@ struct TThresholds
 
 /** Pairs of the scan at `pose` (MRPT determineMatching2D semantics; a
  * point's pairing distance grows with its range, ranges_m[i]); returns the
- * fraction of scan points with a pair before the unique filter. search_m[i]:
- * how far point i's neighbour queries look, at least the widest pairing
- * distance it will have (the first stage's). */
-double pairPoints(const float* xs, const float* ys, const float* ranges_m, const float* search_m, size_t n,
-				  const mrpt::poses::CPose2D& pose, const TThresholds& t, int decimation, CNeighbourCache& cache,
-				  std::vector<TPair>& pairs, CPointToPointIcp::TResult& stats)
+ * fraction of scan points with a pair before the unique filter. */
+double pairPoints(const float* xs, const float* ys, const float* ranges_m, size_t n, const mrpt::poses::CPose2D& pose,
+				  const TThresholds& t, int decimation, CNeighbourCache& cache, std::vector<TPair>& pairs,
+				  CPointToPointIcp::TResult& stats)
 {
 	pairs.clear();
 	const float c = static_cast<float>(std::cos(pose.phi())), s = static_cast<float>(std::sin(pose.phi()));
@@ -111,7 +104,7 @@ double pairPoints(const float* xs, const float* ys, const float* ranges_m, const
 		const float x = px + c * xs[i] - s * ys[i], y = py + s * xs[i] + c * ys[i];
 		const float limit = static_cast<float>(t.ang_rad * ranges_m[i] + t.dist_m);
 		float d2 = 0;
-		const uint32_t r = cache.nearest(i, x, y, limit, search_m[i], d2, stats);
+		const uint32_t r = cache.nearest(i, x, y, limit, d2, stats);
 		if (d2 < limit * limit) pairs.push_back({r, static_cast<uint32_t>(i), d2}), ++withPair;
 	}
 	return static_cast<double>(decimation) * static_cast<double>(withPair) / static_cast<double>(n);
@@ -188,15 +181,13 @@ CPointToPointIcp::TResult CPointToPointIcp::align(const CPointIndex2D& reference
 	TThresholds t{o.threshold_dist_m, o.threshold_ang_rad, 0};
 	std::vector<TPair> pairs;
 	std::vector<uint32_t> slotOfRef(o.only_unique_robust ? reference.size() : 0, std::numeric_limits<uint32_t>::max());
-	std::vector<float> ranges_m(n), search_m(n);
-	for (size_t i = 0; i < n; ++i)  // twice the first stage's pairing limit (it only shrinks): room to move
-		ranges_m[i] = std::hypot(xs[i], ys[i]), search_m[i] = static_cast<float>(2 * (t.ang_rad * ranges_m[i] + t.dist_m));
+	std::vector<float> ranges_m(n);
+	for (size_t i = 0; i < n; ++i) ranges_m[i] = std::hypot(xs[i], ys[i]);
 	mrpt::poses::CPose2D last;
 	bool keepApproaching = true;
 	do
 	{
-		result.goodness =
-			pairPoints(xs, ys, ranges_m.data(), search_m.data(), n, result.pose, t, o.decimation, cache, pairs, result);
+		result.goodness = pairPoints(xs, ys, ranges_m.data(), n, result.pose, t, o.decimation, cache, pairs, result);
 		if (pairs.empty())
 			keepApproaching = false;
 		else

@@ -10,21 +10,13 @@ namespace hslam::matching
 {
 namespace
 {
-/** A point farther than this many sigma from every reference point adds
- * exp(-50) = 2e-22 to the fit: nothing, in double precision, to a sum of
- * likelihoods near 1. The nearest-point query stops there. */
-constexpr double kFitReachSigmas = 10;
-
-/** Squared distance from q to the nearest reference point (any value beyond
- * reach_m when there is none within it), or with maxSegment_m > 0 to the
- * nearest point of the reference's surface. */
+/** Squared distance from q to the nearest reference point, or with
+ * maxSegment_m > 0 to the nearest point of the reference's surface. */
 template <class Reference>
-double distance2To(const Reference& reference, const Eigen::Vector2d& q, double maxSegment_m, double reach_m,
-				   std::vector<size_t>& idx, std::vector<float>& d2)
+double distance2To(const Reference& reference, const Eigen::Vector2d& q, double maxSegment_m, std::vector<size_t>& idx,
+				   std::vector<float>& d2)
 {
-	if (maxSegment_m <= 0)
-		return reference.nearestDistance2(static_cast<float>(q.x()), static_cast<float>(q.y()),
-										  static_cast<float>(reach_m));
+	if (maxSegment_m <= 0) return reference.nearestDistance2(static_cast<float>(q.x()), static_cast<float>(q.y()));
 	Eigen::Vector2d foot;
 	return detail::nearestSurfacePoint(reference, q, maxSegment_m, foot, idx, d2) ? (foot - q).squaredNorm() : 1e30;
 }
@@ -44,8 +36,7 @@ double fitOf(const Reference& reference, const mrpt::maps::CSimplePointsMap& cur
 	for (size_t i = 0; i < xs.size(); ++i)
 	{
 		const double x = pose.x() + c * xs[i] - s * ys[i], y = pose.y() + s * xs[i] + c * ys[i];
-		sum += std::exp(
-			-inv2s2 * distance2To(reference, Eigen::Vector2d(x, y), maxSegment_m, kFitReachSigmas * sigma_m, idx, d2));
+		sum += std::exp(-inv2s2 * distance2To(reference, Eigen::Vector2d(x, y), maxSegment_m, idx, d2));
 	}
 	return sum / static_cast<double>(xs.size());
 }

@@ -73,12 +73,6 @@ TNormalEquations normalEquations(const Reference& reference, size_t count, Point
 	{
 		const mrpt::math::TPoint2D p = pointAt(k);
 		const auto w = pose + p;
-		// unmatched unless a reference point lies within max_match_distance_m:
-		// a bounded query says so before the k-neighbour one that fits the normal
-		if (reference.nearestDistance2(static_cast<float>(w.x), static_cast<float>(w.y),
-									   static_cast<float>(o.max_match_distance_m)) >
-			o.max_match_distance_m * o.max_match_distance_m)
-			continue;
 		reference.nearest(static_cast<float>(w.x), static_cast<float>(w.y), static_cast<size_t>(o.normal_neighbours),
 						  idx, dist2);
 		if (idx.empty() || dist2[0] > o.max_match_distance_m * o.max_match_distance_m) continue;

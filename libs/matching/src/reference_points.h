@@ -22,9 +22,8 @@ struct TMrptReference
 	{
 		map.kdTreeNClosestPoint2DIdx(x, y, k, idx, d2);
 	}
-	/** Squared distance to the nearest reference point (the k-d tree's
-	 * query is not bounded: the exact distance, whatever max_distance_m). */
-	float nearestDistance2(float x, float y, [[maybe_unused]] float max_distance_m) const
+	/** Squared distance to the nearest reference point. */
+	float nearestDistance2(float x, float y) const
 	{
 		float d2 = 0;
 		map.kdTreeClosestPoint2D(x, y, d2);
@@ -45,13 +44,11 @@ struct TIndexReference
 		idx.assign(found, found + n);
 		d2.resize(n);
 	}
-	/** Squared distance to the nearest reference point; 1e30 when none lies
-	 * within max_distance_m (the bucket grid then stops searching there). */
-	float nearestDistance2(float x, float y, float max_distance_m) const
+	float nearestDistance2(float x, float y) const
 	{
 		uint32_t i = 0;
 		float d2 = 0;
-		return index.nearest(x, y, 1, &i, &d2, max_distance_m) ? d2 : 1e30f;
+		return index.nearest(x, y, 1, &i, &d2) ? d2 : 1e30f;
 	}
 	Eigen::Vector2d point(size_t i) const { return {index.x(i), index.y(i)}; }
 };

@@ -21,7 +21,6 @@
 #pragma once
 
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 namespace hslam::matching
@@ -45,13 +44,10 @@ class CPointIndex2D
 	float x(size_t i) const { return m_x[i]; }
 	float y(size_t i) const { return m_y[i]; }
 
-	/** Up to k (<= 32) nearest live points of (x, y) within max_distance_m:
-	 * indices and squared distances, nearest first (equal distances: lower
-	 * index first). Returns how many were found (k unless fewer live points
-	 * lie within max_distance_m). A bounded query stops at its radius instead
-	 * of widening until k points are found, however far. */
-	size_t nearest(float x, float y, size_t k, uint32_t* indices, float* distances2,
-				   float max_distance_m = std::numeric_limits<float>::infinity()) const;
+	/** Up to k (<= 32) nearest live points of (x, y): indices and squared
+	 * distances, nearest first (equal distances: lower index first). Returns
+	 * how many were found (k unless fewer points are live). */
+	size_t nearest(float x, float y, size_t k, uint32_t* indices, float* distances2) const;
 
    private:
 	void rebuildGrid();
