@@ -4,7 +4,10 @@
 #include <gtest/gtest.h>
 #include <hslam/slam/CMotionPrior.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 using hslam::slam::CMotionPrior;
 using hslam::slam::TMotionPrior;
@@ -238,4 +241,47 @@ TEST(MotionPrior, ReadingsLostAtSpeedKeepAMeasuredVelocity)
 	CMotionPrior slow;
 	zerosAfterDriving(slow, 0.3, 0);
 	EXPECT_FALSE(slow.prior(lost, 2.2).velocity_measured);
+}
+
+TEST(MotionPrior, AStallEndsOnlyWhenOdometryAgreesAgain)
+{
+	// Readings creeping at 1 % while the scans move the estimate 0.12 m per
+	// 0.2 s: stalled. Then matching stops seeing the motion (a corridor whose
+	// walls hold no feature along the axis, the laser-only building seen by
+	// an 8 m scanner) and the estimate stands still for 4 s: the old rule
+	// ended the stall there and trusted the creeping readings again, so the
+	// estimate stayed put while the robot drove on.
+	const auto run = [](bool endsOnAgreement)
+	{
+		CMotionPrior::TOptions o;
+		o.stall_ends_on_agreement = endsOnAgreement;
+		CMotionPrior prior(o);
+		std::vector<std::string> reasons;
+		double t = 0, x = 0;
+		const auto scan = [&](double odometry_m, double estimateStep_m)
+		{
+			t += 0.2;
+			reasons.push_back(prior.prior(odometry(odometry_m, 0, 0), t).reason);
+			x += estimateStep_m;
+			prior.observePose(CPose2D(x, 0, 0), t);
+		};
+		for (int k = 0; k < 10; ++k) scan(0.0012, 0.12);  // 2 s driving, readings at 1 %
+		for (int k = 0; k < 20; ++k) scan(0.0012, 0.0);  // 4 s the estimate stands still
+		for (int k = 0; k < 15; ++k) scan(0.12, 0.12);  // 3 s readings and estimate agree
+		return reasons;
+	};
+	const auto sticky = run(true), old = run(false);
+	ASSERT_EQ(sticky.size(), 45u);
+	EXPECT_EQ(sticky[9], "stalled");  // 0.96 m in the window, readings 1 %
+	EXPECT_EQ(old[9], "stalled");
+	// 3.2 s after the estimate stopped, no motion is left in the 3 s window
+	EXPECT_EQ(sticky[26], "stalled");
+	EXPECT_EQ(old[26], "");
+	for (int k = 10; k < 30; ++k) EXPECT_EQ(sticky[static_cast<size_t>(k)], "stalled") << k;
+	// once the readings report the motion the estimate makes, the stall ends
+	// (within the 3 s window: as soon as the window's motion is 0.3 m with
+	// the readings' share above disagreement_ratio)
+	EXPECT_EQ(sticky.back(), "");
+	const auto firstTrusted = std::find(sticky.begin() + 30, sticky.end(), "") - sticky.begin();
+	EXPECT_LE(firstTrusted, 34);
 }

@@ -110,13 +110,20 @@ TMotionPrior CMotionPrior::frozenAtSpeed(double dt_s, double t_s)
 bool CMotionPrior::odometryStalled(double t_s) const
 {
 	double odo_m = 0, odo_rad = 0, est_m = 0, est_rad = 0;
+	size_t intervals = 0;
 	for (const auto& i : m_recent)
 		if (i.t_s >= t_s - m_options.disagreement_window_s)  // the list is pruned only when the next pose comes
-			odo_m += i.odometry_m, odo_rad += i.odometry_rad, est_m += i.estimate_m, est_rad += i.estimate_rad;
+			odo_m += i.odometry_m, odo_rad += i.odometry_rad, est_m += i.estimate_m, est_rad += i.estimate_rad,
+				++intervals;
 	const double k = m_options.disagreement_ratio;
-	return (est_m >= m_options.disagreement_min_motion_m && odo_m < k * est_m) ||
-		   (est_rad >= m_options.disagreement_min_rotation_rad && odo_rad < k * est_rad) ||
-		   m_rejectedInARow >= m_options.rejected_matches_for_stall;
+	const bool moved = est_m >= m_options.disagreement_min_motion_m,
+			   turned = est_rad >= m_options.disagreement_min_rotation_rad;
+	if ((moved && odo_m < k * est_m) || (turned && odo_rad < k * est_rad) ||
+		m_rejectedInARow >= m_options.rejected_matches_for_stall)
+		return true;
+	// stalled: stays so until the motion within the window shows odometry
+	// agrees again (a window without any interval holds no evidence either way)
+	return m_stalled && m_options.stall_ends_on_agreement && intervals > 0 && !moved && !turned;
 }
 
 void CMotionPrior::observeMatch(const mrpt::poses::CPose2D& measured, const Eigen::Matrix3d& covariance,

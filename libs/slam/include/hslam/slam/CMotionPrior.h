@@ -81,6 +81,13 @@ class CMotionPrior
 		double disagreement_min_motion_m = 0.3;
 		double disagreement_min_rotation_rad = 20.0 * M_PI / 180.0;
 		double disagreement_ratio = 0.25;
+		/** A stall ends only once the estimate moved enough over the window
+		 * to judge odometry (disagreement_min_motion_m or
+		 * disagreement_min_rotation_deg) and odometry did not disagree with
+		 * it. Without this, a stall ends as soon as the estimate stops moving
+		 * (a corridor where matching no longer sees the motion) and hands the
+		 * estimate back to readings that creep. */
+		bool stall_ends_on_agreement = true;
 		double measured_max_std_m = 0.1;  //!< see observeMatch()
 		int rejected_matches_for_stall = 3;  //!< see file comment ("stalled")
 		double contradicting_nis = 16.27;  //!< an accepted match above this NIS counts as rejected (0 = off)
@@ -108,6 +115,7 @@ class CMotionPrior
 			v.real("disagreement_min_motion_m", disagreement_min_motion_m, 0.01, 100.0);
 			v.degrees("disagreement_min_rotation_deg", disagreement_min_rotation_rad, 1.0, 3600.0);
 			v.real("disagreement_ratio", disagreement_ratio, 0.0, 1.0);
+			v.flag("stall_ends_on_agreement", stall_ends_on_agreement);
 			v.real("measured_max_std_m", measured_max_std_m, 0.001, 100.0);
 			v.integer("rejected_matches_for_stall", rejected_matches_for_stall, 1, 1000);
 			v.real("contradicting_nis", contradicting_nis, 0.0, 1e6);
