@@ -185,8 +185,13 @@ TEST(FrontEndScenarios, LaserOnlyStartedWhileDrivingIsTracked)
 	const TScores neitherTrack = runDefault(shipped("laser-only"), neither, 200);
 	print("laser only, from entry 200, no competing basins, point-to-point standstill check", neitherTrack);
 	EXPECT_GT(neitherTrack.ate_m, 0.5);
-	const TScores old = runDefault(
-		shipped("laser-only"), {"motion_prior.contradicting_nis=0", "pose_estimation.seed_refused_matches=false"}, 14);
+	// (the nineteenth round's remedies hold this start too: the stalled
+	// matches' point-to-line check alone 0.062 m, the stall that ends on
+	// agreement alone 0.207 m; they are switched off here with the older two)
+	const TScores old = runDefault(shipped("laser-only"),
+								   {"motion_prior.contradicting_nis=0", "pose_estimation.seed_refused_matches=false",
+									"pose_estimation.stalled_point_to_line=false", "motion_prior.stall_ends_on_agreement=false"},
+								   14);
 	print("laser only, from entry 14, as before", old);
 	EXPECT_GT(old.ate_m, 0.5);  // the failure, so this test can fail
 }
@@ -427,6 +432,23 @@ TEST(FrontEndScenarios, LongRangeLaserAroundAFloorLeavesTheAxisToOdometry)
 	EXPECT_GT(r.off.ate_m, 0.18);  // measured 0.207 m: this test can fail
 	EXPECT_LT(r.on.rpe5_m, 1.1 * r.on.odometry_rpe5_m);
 	EXPECT_GT(r.off.rpe5_m, 1.5 * r.off.odometry_rpe5_m);  // measured 0.052 m: worse than odometry
+}
+
+TEST(FrontEndScenarios, LaserOnlyWithAnEightMetreScannerIsNotPinnedToTheLastKeyframe)
+{
+	// The laser-only sample's building (readings creeping at 1 %) seen by an
+	// 8 m scanner instead of 30 m: down the ring corridor point ICP held the
+	// estimate where the scan's wall samples fell on the last keyframe's,
+	// claiming a few centimetres along the axis, while the robot drove 6 m
+	// on. While odometry is stalled, ICP is refined point-to-line and judged
+	// by the point-to-segment fit, as a standstill claim is
+	// ([pose_estimation] stalled_point_to_line).
+	hslam::testing::CTempDir dir;
+	const auto folder = simulated("laser-only", dir, "--set laser.max_range_m=8");
+	const TRemedy r = withAndWithout(folder, "pose_estimation.stalled_point_to_line=false", "laser only at 8 m");
+	// measured 3.69 m (odometry 9.22 m); 5.42 m without
+	EXPECT_LT(r.on.ate_m, 0.45 * r.on.odometry_ate_m);
+	EXPECT_GT(r.off.ate_m, 1.3 * r.on.ate_m);
 }
 
 TEST(FrontEndScenarios, AnIcpMatchFittingWorseThanThePredictionIsNotUsed)

@@ -73,6 +73,12 @@ struct TPoseEstimationOptions
 	 * the last ICP checks a standstill claim ([icp] standstill_*). */
 	double standstill_max_m = 0.01;
 	double standstill_max_rad = 0.5 * M_PI / 180.0;
+	/** While odometry counts as stalled ([motion_prior]: readings that
+	 * creep), ICP is refined and judged as a standstill check is ([icp]
+	 * standstill_*): the constant-velocity prior is no measurement, and
+	 * point-to-point ICP pins the estimate where the scan's wall samples fall
+	 * on the last keyframe's. */
+	bool stalled_point_to_line = true;
 	/** icp and lines+icp: "mrpt" = MRPT's point-to-point ICP against the
 	 * points of recent keyframes ([icp], [icp_map]); "point_to_line" =
 	 * CPointToLineIcp against the local map of the keyframe store
@@ -112,6 +118,7 @@ struct TPoseEstimationOptions
 		v.real("match_every_s", match_every_s, 0.0, 1e6);
 		v.real("standstill_max_m", standstill_max_m, 0.0, 100.0);
 		v.degrees("standstill_max_deg", standstill_max_rad, 0.0, 360.0);
+		v.flag("stalled_point_to_line", stalled_point_to_line);
 		v.choice("icp_matcher", icp_matcher, {"mrpt", "point_to_line", "mrpt+point_to_line"});
 		v.flag("seed_refused_matches", seed_refused_matches);
 		v.real("max_fit_loss_vs_prediction", max_fit_loss_vs_prediction, -1.0, 1.0);
