@@ -187,10 +187,12 @@ TEST(FrontEndScenarios, LaserOnlyStartedWhileDrivingIsTracked)
 	EXPECT_GT(neitherTrack.ate_m, 0.5);
 	// (the nineteenth round's remedies hold this start too: the stalled
 	// matches' point-to-line check alone 0.062 m, the stall that ends on
-	// agreement alone 0.207 m; they are switched off here with the older two)
+	// agreement alone 0.207 m, with keyframes on time 0.101 m; they are
+	// switched off here with the older two)
 	const TScores old = runDefault(shipped("laser-only"),
 								   {"motion_prior.contradicting_nis=0", "pose_estimation.seed_refused_matches=false",
-									"pose_estimation.stalled_point_to_line=false", "motion_prior.stall_ends_on_agreement=false"},
+									"pose_estimation.stalled_point_to_line=false", "motion_prior.stall_ends_on_agreement=false",
+									"pose_estimation.stalled_keyframe_every_s=0"},
 								   14);
 	print("laser only, from entry 14, as before", old);
 	EXPECT_GT(old.ate_m, 0.5);  // the failure, so this test can fail
@@ -440,15 +442,23 @@ TEST(FrontEndScenarios, LaserOnlyWithAnEightMetreScannerIsNotPinnedToTheLastKeyf
 	// 8 m scanner instead of 30 m: down the ring corridor point ICP held the
 	// estimate where the scan's wall samples fell on the last keyframe's,
 	// claiming a few centimetres along the axis, while the robot drove 6 m
-	// on. While odometry is stalled, ICP is refined point-to-line and judged
-	// by the point-to-segment fit, as a standstill claim is
-	// ([pose_estimation] stalled_point_to_line).
+	// on; keyframes come by estimated travel, so none came. While odometry is
+	// stalled, ICP is refined point-to-line and judged by the point-to-segment
+	// fit as a standstill claim is ([pose_estimation] stalled_point_to_line),
+	// and keyframes also come on time (stalled_keyframe_every_s).
 	hslam::testing::CTempDir dir;
 	const auto folder = simulated("laser-only", dir, "--set laser.max_range_m=8");
-	const TRemedy r = withAndWithout(folder, "pose_estimation.stalled_point_to_line=false", "laser only at 8 m");
-	// measured 3.69 m (odometry 9.22 m); 5.42 m without
-	EXPECT_LT(r.on.ate_m, 0.45 * r.on.odometry_ate_m);
-	EXPECT_GT(r.off.ate_m, 1.3 * r.on.ate_m);
+	const TScores both = runDefault(folder);
+	const TScores noTimedKeyframes = runDefault(folder, {"pose_estimation.stalled_keyframe_every_s=0"});
+	const TScores neither = runDefault(
+		folder, {"pose_estimation.stalled_keyframe_every_s=0", "pose_estimation.stalled_point_to_line=false"});
+	print("laser only at 8 m, default", both);
+	print("laser only at 8 m, keyframes by travel only", noTimedKeyframes);
+	print("laser only at 8 m, neither", neither);
+	// measured 2.53, 3.69 and 5.42 m (odometry 9.22 m)
+	EXPECT_LT(both.ate_m, 0.35 * both.odometry_ate_m);
+	EXPECT_GT(noTimedKeyframes.ate_m, 1.2 * both.ate_m);
+	EXPECT_GT(neither.ate_m, 1.3 * noTimedKeyframes.ate_m);
 }
 
 TEST(FrontEndScenarios, AnIcpMatchFittingWorseThanThePredictionIsNotUsed)

@@ -288,8 +288,13 @@ void CScanMatchingPoseEstimator::addKeyframeIfDue(const common::TRangeData& scan
 	if (!usesIcp()) return;
 	if (usesPointToLine() && m_store.wantsKeyframe(pose))
 		m_store.add(scan.points, pose, m_ukf.covariance(), scan.t_s);
-	if (m_options.icp_matcher != "point_to_line" && m_keyframes.wantsKeyframe(pose))
-		m_keyframes.addKeyframe(pose, scan.points.xy);
+	// While stalled, keyframes come on time too: by estimated travel alone
+	// none came where matching held the estimate back, and the scan was
+	// matched against an ever older one (laser-only building, 8 m scanner).
+	const bool onTime = m_stalledSinceMatch && m_options.stalled_keyframe_every_s > 0 &&
+						scan.t_s - m_lastKeyframe_s >= m_options.stalled_keyframe_every_s;
+	if (m_options.icp_matcher != "point_to_line" && (m_keyframes.wantsKeyframe(pose) || onTime))
+		m_keyframes.addKeyframe(pose, scan.points.xy), m_lastKeyframe_s = scan.t_s;
 }
 
 void CScanMatchingPoseEstimator::recoverAfterGap(const matching::TLineScanFrame& frame, const common::TRangeData& scan,

@@ -79,6 +79,9 @@ struct TPoseEstimationOptions
 	 * point-to-point ICP pins the estimate where the scan's wall samples fall
 	 * on the last keyframe's. */
 	bool stalled_point_to_line = true;
+	/** While odometry counts as stalled, an ICP keyframe is also added when
+	 * this long (s) has passed since the last one (0 = by travel only). */
+	double stalled_keyframe_every_s = 1.0;
 	/** icp and lines+icp: "mrpt" = MRPT's point-to-point ICP against the
 	 * points of recent keyframes ([icp], [icp_map]); "point_to_line" =
 	 * CPointToLineIcp against the local map of the keyframe store
@@ -119,6 +122,7 @@ struct TPoseEstimationOptions
 		v.real("standstill_max_m", standstill_max_m, 0.0, 100.0);
 		v.degrees("standstill_max_deg", standstill_max_rad, 0.0, 360.0);
 		v.flag("stalled_point_to_line", stalled_point_to_line);
+		v.real("stalled_keyframe_every_s", stalled_keyframe_every_s, 0.0, 1000.0);
 		v.choice("icp_matcher", icp_matcher, {"mrpt", "point_to_line", "mrpt+point_to_line"});
 		v.flag("seed_refused_matches", seed_refused_matches);
 		v.real("max_fit_loss_vs_prediction", max_fit_loss_vs_prediction, -1.0, 1.0);

@@ -219,6 +219,7 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	/** Sum of the non-odometry priors' covariances since the last match (the gap search's window). */
 	Eigen::Matrix3d m_priorCovSinceMatch = Eigen::Matrix3d::Zero();
 	bool m_gapVelocityMeasured = false;  //!< every such prior since the last match was velocity_measured
+	double m_lastKeyframe_s = -1e300;  //!< scan time of the last ICP keyframe
 	bool m_stalledSinceMatch = false;  //!< the prior was a stall's constant velocity since the last match
 	bool m_gapSinceMatch = false;  //!< the prior was not odometry since the last match: match (and ICP) now
 	double m_lastIcp_s = 0;  //!< time of the last ICP match
