@@ -18,7 +18,10 @@
  *             would never move; a match it accepted with a normalised
  *             innovation above contradicting_nis counts as rejected too:
  *             against a prediction a few millimetres wide a 0.12 m match
- *             passes the gate and moves the estimate by 2 mm);
+ *             passes the gate and moves the estimate by 2 mm). A stall ends
+ *             only once the estimate moved enough within the window to judge
+ *             odometry and odometry agreed (stall_ends_on_agreement), not
+ *             merely because the estimate stopped moving;
  *  - jump     (an increment faster than max_speed_mps / max_turn_rate_rad_s
  *             over the scan interval: readings resuming after a stall with
  *             the motion of the whole stall, a wrap, a reset): unknown too.

@@ -29,6 +29,9 @@
  * travel at all (standstill_max_m / _deg) is refined point-to-line and judged
  * by the point-to-segment fit ([icp] standstill_*): point-to-point measures
  * favour zero motion against a reference scan taken from the claimed pose.
+ * While odometry counts as stalled (readings that creep), every ICP match is
+ * checked that way (stalled_point_to_line) and keyframes also come on time
+ * (stalled_keyframe_every_s), since estimated travel may not come.
  *
  * INI sections: [pose_estimation], [line_extraction], [line_extraction_<method>], [line_matching],
  * [icp], [icp_map], [ukf], [odometry_noise], [motion_prior]. */
