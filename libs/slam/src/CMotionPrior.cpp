@@ -87,7 +87,7 @@ TMotionPrior CMotionPrior::choose(const TOdometryIncrement& increment, double dt
 	m_faultAtSpeed = false;  // a jump or a stall: what the velocity says is in doubt
 	if (isJump(increment.delta, dt)) return constantVelocity(dt, "jump");
 	m_stalled = odometryStalled(t_s);
-	if (m_stalled) return constantVelocity(dt, "stalled");
+	if (m_stalled) return constantVelocity(dt, TMotionPrior::kStalled);
 	TMotionPrior p;
 	p.delta = increment.delta;
 	return p;

@@ -186,7 +186,7 @@ void CScanMatchingPoseEstimator::predict(const TOdometryIncrement& increment, co
 		m_priorCovSinceMatch += prior.covariance;
 		m_gapVelocityMeasured = (!m_gapSinceMatch || m_gapVelocityMeasured) && prior.velocity_measured;
 		m_gapSinceMatch = true;
-		if (prior.reason == "stalled") m_stalledSinceMatch = true;
+		m_stalledSinceMatch = m_stalledSinceMatch || prior.stalled();
 	}
 	m_sinceMatchCov = fusion::odometryIncrementCovariance(m_odometryNoise, toVec(m_sinceMatch));
 	if (m_gapSinceMatch) m_sinceMatchCov += unknownCov;
@@ -200,7 +200,7 @@ void CScanMatchingPoseEstimator::restartAtRefusedMatches(const TMotionPrior& pri
 	// ahead (truth 0.48, 0.84, 1.20), and at the next scan ICP from where
 	// they put the robot was right, but from the stuck state, next to the
 	// only keyframe, a wrong result fitted better (alignment_fit.h).
-	if (!m_options.seed_refused_matches || prior.reason != "stalled" || !m_motion.refusingMatches()) return;
+	if (!m_options.seed_refused_matches || !prior.stalled() || !m_motion.refusingMatches()) return;
 	if (const auto refused = m_motion.contradictedMatchSeed(t_s)) m_ukf.reset(toVec(*refused), prior.covariance);
 }
 

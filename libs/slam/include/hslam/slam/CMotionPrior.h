@@ -59,7 +59,10 @@ struct TMotionPrior
 		odometry,
 		constant_velocity
 	} source = ESource::odometry;
-	std::string reason;  //!< "", "gap", "frozen", "stalled", "jump"
+	std::string reason;  //!< "", "gap", "frozen", kStalled, "jump"
+	static constexpr const char* kStalled = "stalled";
+	/** Odometry was judged stalled (readings that creep): a constant-velocity prior. */
+	bool stalled() const { return reason == kStalled; }
 	/** A constant-velocity prior whose velocity was measured on trusted
 	 * odometry: the readings froze or stopped coming while the robot moved
 	 * faster than any stop explains ([motion_prior] max_decel_mps2), so the
