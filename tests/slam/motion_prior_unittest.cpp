@@ -51,6 +51,25 @@ TEST(MotionPrior, VelocityIsMeasuredOverTheMinimumInterval)
 	EXPECT_NEAR(prior.velocity().x(), 0.5 / 1.02, 1e-9);
 }
 
+TEST(MotionPrior, ARestartIsNoMotion)
+{
+	// The robot drives at 0.6 m/s; the filter is restarted 1.1 m ahead (where
+	// refused matches put it). Measured across the restart, the velocity was
+	// (1.1 + 0.12) / 0.4 = 3 m/s (the robot's limit); after restarted() it is
+	// measured from the restart on: 0.12 m / 0.2 s.
+	const auto drive = [](CMotionPrior& prior, bool restart)
+	{
+		for (int k = 0; k <= 5; ++k) prior.observePose(CPose2D(0.12 * k, 0, 0), 0.2 * k);  // 0.6 m/s
+		if (restart) prior.restarted();
+		prior.observePose(CPose2D(0.6 + 1.1, 0, 0), 1.2);
+		prior.observePose(CPose2D(0.6 + 1.1 + 0.12, 0, 0), 1.4);
+		return prior.velocity().x();
+	};
+	CMotionPrior across, restarted;
+	EXPECT_GT(drive(across, false), 2.5);
+	EXPECT_NEAR(drive(restarted, true), 0.6, 1e-9);
+}
+
 TEST(MotionPrior, VelocityNeverExceedsTheRobotsLimits)
 {
 	CMotionPrior::TOptions o;

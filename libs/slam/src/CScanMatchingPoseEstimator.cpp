@@ -1,6 +1,7 @@
 #include <hslam/common/options_io.h>
 #include <hslam/matching/alignment_fit.h>
 #include <hslam/matching/competing_basins.h>
+#include <hslam/matching/scan_constraint.h>
 #include <hslam/matching/scan_points.h>
 #include <hslam/slam/CScanMatchingPoseEstimator.h>
 
@@ -201,7 +202,8 @@ void CScanMatchingPoseEstimator::restartAtRefusedMatches(const TMotionPrior& pri
 	// they put the robot was right, but from the stuck state, next to the
 	// only keyframe, a wrong result fitted better (alignment_fit.h).
 	if (!m_options.seed_refused_matches || !prior.stalled() || !m_motion.refusingMatches()) return;
-	if (const auto refused = m_motion.contradictedMatchSeed(t_s)) m_ukf.reset(toVec(*refused), prior.covariance);
+	if (const auto refused = m_motion.contradictedMatchSeed(t_s))
+		m_ukf.reset(toVec(*refused), prior.covariance), m_motion.restarted();
 }
 
 void CScanMatchingPoseEstimator::addSeedIfNew(std::vector<mrpt::poses::CPose2D>& seeds, const mrpt::poses::CPose2D& seed)
@@ -315,6 +317,26 @@ void CScanMatchingPoseEstimator::recoverAfterGap(const matching::TLineScanFrame&
 	if (recovered && recovered->quality != matching::EMatchQuality::failed &&
 		(!icpMatch || recovered->fit >= icpMatch->fit + m_gapSearch.options().min_fit_gain))
 		icpMatch = recovered;
+}
+
+void CScanMatchingPoseEstimator::leaveUnconstrainedAxisToPrior(matching::TPoseMatch& match,
+																 const matching::TLineScanFrame& frame) const
+{
+	// While stalled the constant-velocity prior is all there is along a
+	// direction the scan's surfaces do not constrain (a bare corridor's
+	// axis beyond the scanner's reach): ICP's own covariance claimed a few
+	// centimetres there, the matches held the estimate on the last keyframe
+	// and the velocity measured from those estimates fell to zero
+	// (laser-only building, 8 m scanner: 5.7 m of travel lost in 10 s).
+	const double maxFraction = m_options.stalled_unconstrained_max_fraction;
+	if (!m_stalledSinceMatch || maxFraction <= 0) return;
+	const auto& geometric = m_icp.options().geometric;
+	const matching::TScanConstraint c = matching::scanTranslationConstraint(
+		frame.points, m_options.stalled_normal_radius_m, geometric.full_weight_spacing_m);
+	if (c.points < 10 || c.weakest_fraction >= maxFraction) return;
+	const double c0 = std::cos(match.pose.phi()), s0 = std::sin(match.pose.phi());
+	const Eigen::Vector2d d(c0 * c.weakest.x() - s0 * c.weakest.y(), s0 * c.weakest.x() + c0 * c.weakest.y());  // world
+	match.covariance.topLeftCorner<2, 2>() += geometric.max_std_m * geometric.max_std_m * d * d.transpose();
 }
 
 std::optional<mrpt::poses::CPose2D> CScanMatchingPoseEstimator::gapSearchSeed(const matching::TLineScanFrame& frame)
@@ -459,6 +481,7 @@ void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, c
 		if (m_options.seed_refused_matches && refused) addSeedIfNew(seeds, *refused);
 		icpMatch = runIcp(frame, scan, seeds, !refused && estimate.motion_prior.empty(), icpResults);
 		recoverAfterGap(frame, scan, icpMatch);
+		if (icpMatch) leaveUnconstrainedAxisToPrior(*icpMatch, frame);
 		if (icpMatch && refusedSeed < icpResults.size() &&
 			matching::competesWith(*icpMatch, icpResults[refusedSeed], m_icp.options().competing))
 			refusedTrack = &icpResults[refusedSeed];

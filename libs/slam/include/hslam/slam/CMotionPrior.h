@@ -138,6 +138,10 @@ class CMotionPrior
 	TMotionPrior prior(const TOdometryIncrement& increment, double t_s);
 	/** The estimated pose at the scan at `t_s` (feeds the velocity). */
 	void observePose(const mrpt::poses::CPose2D& pose, double t_s);
+	/** The filter was restarted elsewhere (contradictedMatchSeed): the jump
+	 * is no motion, so neither the velocity nor the stall window measures
+	 * across it; the velocity stays the refused matches' own. */
+	void restarted();
 	/** A pose the scan matcher measured at the scan at `t_s` (world frame),
 	 * whether the filter `accepted` it and its normalised innovation squared;
 	 * used only if its translation is constrained in every direction (std <=

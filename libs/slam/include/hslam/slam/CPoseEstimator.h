@@ -79,6 +79,13 @@ struct TPoseEstimationOptions
 	 * point-to-point ICP pins the estimate where the scan's wall samples fall
 	 * on the last keyframe's. */
 	bool stalled_point_to_line = true;
+	/** While odometry counts as stalled, a translation direction holding
+	 * less than this share of the scan's own surface information
+	 * (matching::scanTranslationConstraint, normals fitted along the scan
+	 * over stalled_normal_radius_m) is left to the constant-velocity prior:
+	 * the ICP match's variance there is made huge. 0 = off. */
+	double stalled_unconstrained_max_fraction = 0.01;
+	double stalled_normal_radius_m = 0.2;
 	/** While odometry counts as stalled, an ICP keyframe is also added when
 	 * this long (s) has passed since the last one (0 = by travel only). */
 	double stalled_keyframe_every_s = 1.0;
@@ -122,6 +129,8 @@ struct TPoseEstimationOptions
 		v.real("standstill_max_m", standstill_max_m, 0.0, 100.0);
 		v.degrees("standstill_max_deg", standstill_max_rad, 0.0, 360.0);
 		v.flag("stalled_point_to_line", stalled_point_to_line);
+		v.real("stalled_unconstrained_max_fraction", stalled_unconstrained_max_fraction, 0.0, 0.5);
+		v.real("stalled_normal_radius_m", stalled_normal_radius_m, 0.01, 10.0);
 		v.real("stalled_keyframe_every_s", stalled_keyframe_every_s, 0.0, 1000.0);
 		v.choice("icp_matcher", icp_matcher, {"mrpt", "point_to_line", "mrpt+point_to_line"});
 		v.flag("seed_refused_matches", seed_refused_matches);

@@ -182,6 +182,10 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 						 std::optional<matching::TPoseMatch>& icpMatch);
 	/** After a gap of unknown motion: the gap search's pose of `frame` (world), if any. */
 	std::optional<mrpt::poses::CPose2D> gapSearchSeed(const matching::TLineScanFrame& frame);
+	/** While stalled: a direction the scan's surfaces leave unconstrained
+	 * gets a huge variance in `match` ([pose_estimation]
+	 * stalled_unconstrained_max_fraction). */
+	void leaveUnconstrainedAxisToPrior(matching::TPoseMatch& match, const matching::TLineScanFrame& frame) const;
 	/** Updates the filter with `match`; `refusedTrack`, when set, is the
 	 * refused-match seed's result competing with it, which the motion prior
 	 * then counts as another refusal instead of the match's confirmation. */
