@@ -333,7 +333,8 @@ void CScanMatchingPoseEstimator::leaveUnconstrainedAxisToPrior(matching::TPoseMa
 	const auto& geometric = m_icp.options().geometric;
 	const matching::TScanConstraint c = matching::scanTranslationConstraint(
 		frame.points, m_options.stalled_normal_radius_m, geometric.full_weight_spacing_m);
-	if (c.points < 10 || c.weakest_fraction >= maxFraction) return;
+	constexpr size_t kMinSurfacePoints = 10;  // fewer: too little of a scan to judge (as in icp_covariance)
+	if (c.points < kMinSurfacePoints || c.weakest_fraction >= maxFraction) return;
 	const double c0 = std::cos(match.pose.phi()), s0 = std::sin(match.pose.phi());
 	const Eigen::Vector2d d(c0 * c.weakest.x() - s0 * c.weakest.y(), s0 * c.weakest.x() + c0 * c.weakest.y());  // world
 	match.covariance.topLeftCorner<2, 2>() += geometric.max_std_m * geometric.max_std_m * d * d.transpose();
