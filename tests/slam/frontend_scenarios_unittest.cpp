@@ -185,15 +185,19 @@ TEST(FrontEndScenarios, LaserOnlyStartedWhileDrivingIsTracked)
 	const TScores neitherTrack = runDefault(shipped("laser-only"), neither, 200);
 	print("laser only, from entry 200, no competing basins, point-to-point standstill check", neitherTrack);
 	EXPECT_GT(neitherTrack.ate_m, 0.5);
-	// (the nineteenth round's remedies hold this start too: the stalled
-	// matches' point-to-line check alone 0.062 m, the stall that ends on
-	// agreement alone 0.207 m, with keyframes on time 0.101 m; they are
-	// switched off here with the older two)
-	const TScores old = runDefault(shipped("laser-only"),
-								   {"motion_prior.contradicting_nis=0", "pose_estimation.seed_refused_matches=false",
-									"pose_estimation.stalled_point_to_line=false", "motion_prior.stall_ends_on_agreement=false",
-									"pose_estimation.stalled_keyframe_every_s=0"},
-								   14);
+	// (the nineteenth and twentieth rounds' remedies hold this start too:
+	// the stalled matches' point-to-line check alone 0.062 m, the stall that
+	// ends on agreement alone 0.207 m, with keyframes on time 0.101 m, the
+	// unconstrained axis left to the prior with the speed measured between
+	// matches a second apart 0.219 m; they are switched off here with the
+	// older two)
+	const TScores old = runDefault(
+		shipped("laser-only"),
+		{"motion_prior.contradicting_nis=0", "pose_estimation.seed_refused_matches=false",
+		 "pose_estimation.stalled_point_to_line=false", "motion_prior.stall_ends_on_agreement=false",
+		 "pose_estimation.stalled_keyframe_every_s=0", "pose_estimation.stalled_unconstrained_max_fraction=0",
+		 "motion_prior.stalled_velocity_baseline_s=0"},
+		14);
 	print("laser only, from entry 14, as before", old);
 	EXPECT_GT(old.ate_m, 0.5);  // the failure, so this test can fail
 }
@@ -446,7 +450,8 @@ TEST(FrontEndScenarios, LaserOnlyWithAnEightMetreScannerIsNotPinnedToTheLastKeyf
 	// by the point-to-segment fit as a standstill claim is ([pose_estimation]
 	// stalled_point_to_line), and a direction the scan's own surfaces leave
 	// unconstrained (a bare corridor's axis out of the scanner's reach) is
-	// left to the constant-velocity prior (stalled_unconstrained_max_fraction).
+	// left to the constant-velocity prior (stalled_unconstrained_max_fraction;
+	// only scan points the keyframes hold count).
 	hslam::testing::CTempDir dir;
 	const auto folder = simulated("laser-only", dir, "--set laser.max_range_m=8");
 	const TScores both = runDefault(folder);
@@ -456,10 +461,10 @@ TEST(FrontEndScenarios, LaserOnlyWithAnEightMetreScannerIsNotPinnedToTheLastKeyf
 	print("laser only at 8 m, default", both);
 	print("laser only at 8 m, the axis measured by ICP's covariance", pinnedAxis);
 	print("laser only at 8 m, neither", neither);
-	// online estimates: measured 0.63, 2.16 and 3.27 m (odometry 9.22 m;
+	// online estimates: measured 0.071, 2.49 and 3.54 m (odometry 9.22 m;
 	// 2.53, 2.16 and 5.42 m before the twentieth round)
-	EXPECT_LT(both.ate_m, 0.1 * both.odometry_ate_m);
-	EXPECT_GT(pinnedAxis.ate_m, 2.5 * both.ate_m);
+	EXPECT_LT(both.ate_m, 0.02 * both.odometry_ate_m);
+	EXPECT_GT(pinnedAxis.ate_m, 10.0 * both.ate_m);
 	EXPECT_GT(neither.ate_m, 1.3 * pinnedAxis.ate_m);
 }
 

@@ -304,3 +304,37 @@ TEST(MotionPrior, AStallEndsOnlyWhenOdometryAgreesAgain)
 	const auto firstTrusted = std::find(sticky.begin() + 30, sticky.end(), "") - sticky.begin();
 	EXPECT_LE(firstTrusted, 34);
 }
+
+TEST(MotionPrior, WhileStalledTheSpeedComesFromMatchesASecondApart)
+{
+	// Readings creeping at 1 % while the robot drives at 0.8 m/s: stalled.
+	// From 1.8 s the estimate lags 0.39 m (a bare stretch of corridor left
+	// the axis to the prior); at 2.4 s a well-constrained match puts it
+	// where the robot is. Measured from the estimates over 0.4 s, that
+	// correction is 1.8 m/s (simulated floor laps: 1.7 m/s, and the prior
+	// then ran 20 m ahead); between matches at least a second apart it is
+	// the robot's 0.8 m/s, whatever the lag.
+	const auto run = [](double baseline_s)
+	{
+		CMotionPrior::TOptions o;
+		o.stalled_velocity_baseline_s = baseline_s;
+		CMotionPrior prior(o);
+		const Eigen::Matrix3d constrained = Eigen::Vector3d(0.02 * 0.02, 0.02 * 0.02, 1e-4).asDiagonal();
+		std::vector<double> speeds;
+		for (int k = 1; k <= 18; ++k)
+		{
+			const double t = 0.2 * k, truth = 0.8 * t;
+			const double estimate = k >= 9 && k <= 11 ? truth - 0.39 : truth;
+			prior.prior(odometry(0.0016, 0, 0), t);  // 1 % of 0.16 m
+			if (k >= 12) prior.observeMatch(CPose2D(truth, 0, 0), constrained, true, 0.0, t);
+			prior.observePose(CPose2D(estimate, 0, 0), t);
+			speeds.push_back(prior.velocity().x());
+		}
+		EXPECT_EQ(prior.prior(odometry(0.0016, 0, 0), 3.8).reason, "stalled");
+		return speeds;
+	};
+	const auto baseline = run(1.0), fromEstimates = run(0);
+	EXPECT_GT(fromEstimates[11], 1.5);  // at 2.4 s: 1.78 m/s
+	for (size_t k = 11; k < baseline.size(); ++k) EXPECT_LT(baseline[k], 1.0) << "at " << 0.2 * (k + 1) << " s";
+	EXPECT_NEAR(baseline.back(), 0.8, 1e-9);  // matches from 2.4 s to 3.6 s
+}

@@ -106,6 +106,14 @@ class CMotionPrior
 		 * first frozen prior catches up on those scans. Readings that stop
 		 * coming at such a speed keep the velocity the same way. 0 = off. */
 		double max_decel_mps2 = 2.0;
+		/** While stalled, the translation velocity is measured only between
+		 * well-constrained matches at least this far apart (s); the
+		 * estimates between them follow the prior wherever the scan leaves
+		 * a direction loose, and one correction measured over 0.2-0.4 s as
+		 * motion became a speed the prior then carried down the next bare
+		 * corridor. The turn rate still comes from the estimates (heading
+		 * is measured). 0 = from the estimates as otherwise. */
+		double stalled_velocity_baseline_s = 1.0;
 
 		template <class V>
 		void visit(V& v)
@@ -127,6 +135,7 @@ class CMotionPrior
 			v.real("contradicting_nis", contradicting_nis, 0.0, 1e6);
 			v.real("min_interval_s", min_interval_s, 0.0, 10.0);
 			v.real("max_decel_mps2", max_decel_mps2, 0.0, 100.0);
+			v.real("stalled_velocity_baseline_s", stalled_velocity_baseline_s, 0.0, 100.0);
 		}
 	};
 
@@ -217,6 +226,13 @@ class CMotionPrior
 	mrpt::poses::CPose2D m_lastPose;
 	std::deque<std::pair<double, mrpt::poses::CPose2D>> m_poseHistory;  //!< estimates of the last min_interval_s
 	Eigen::Vector3d m_velocity = Eigen::Vector3d::Zero();
+	/** Well-constrained matches of the last disagreement_window_s while
+	 * stalled (stalled_velocity_baseline_s). */
+	std::deque<std::pair<double, mrpt::poses::CPose2D>> m_stalledMatches;
+	/** While stalled: the translation velocity between the newest match
+	 * and one at least stalled_velocity_baseline_s older, if any. */
+	void measureStalledVelocity(const mrpt::poses::CPose2D& measured, double t_s);
+	bool stalledBaseline() const { return m_stalled && m_options.stalled_velocity_baseline_s > 0; }
 };
 
 }  // namespace hslam::slam

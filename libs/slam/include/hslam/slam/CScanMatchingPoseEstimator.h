@@ -185,7 +185,11 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	/** While stalled: a direction the scan's surfaces leave unconstrained
 	 * gets a huge variance in `match` ([pose_estimation]
 	 * stalled_unconstrained_max_fraction). */
-	void leaveUnconstrainedAxisToPrior(matching::TPoseMatch& match, const matching::TLineScanFrame& frame) const;
+	void leaveUnconstrainedAxisToPrior(matching::TPoseMatch& match, const matching::TLineScanFrame& frame);
+	/** The points (robot frame) with a reference point within maxDistance_m
+	 * when the robot stands at `pose` (world). */
+	std::vector<mrpt::math::TPoint2D> pointsTheReferenceHolds(const std::vector<mrpt::math::TPoint2D>& points,
+															  const mrpt::poses::CPose2D& pose, double maxDistance_m);
 	/** Updates the filter with `match`; `refusedTrack`, when set, is the
 	 * refused-match seed's result competing with it, which the motion prior
 	 * then counts as another refusal instead of the match's confirmation. */
