@@ -148,8 +148,9 @@ void CMotionPrior::measureStalledVelocity(const mrpt::poses::CPose2D& measured, 
 	// Simulated floor laps, readings creeping: a match 0.39 m ahead of the
 	// lagging estimate after a bare stretch, measured against the match
 	// 0.2 s before, set 2.7 m/s (truth 0.8); the prior then ran 20 m ahead.
-	while (!m_stalledMatches.empty() && m_stalledMatches.front().first < t_s - m_options.disagreement_window_s)
-		m_stalledMatches.pop_front();
+	// kept over the stall window, or twice the baseline if that is longer
+	const double keep_s = std::max(m_options.disagreement_window_s, 2.0 * m_options.stalled_velocity_baseline_s);
+	while (!m_stalledMatches.empty() && m_stalledMatches.front().first < t_s - keep_s) m_stalledMatches.pop_front();
 	const std::pair<double, mrpt::poses::CPose2D>* base = nullptr;
 	for (const auto& m : m_stalledMatches)
 		if (m.first <= t_s - m_options.stalled_velocity_baseline_s) base = &m;

@@ -226,8 +226,8 @@ class CMotionPrior
 	mrpt::poses::CPose2D m_lastPose;
 	std::deque<std::pair<double, mrpt::poses::CPose2D>> m_poseHistory;  //!< estimates of the last min_interval_s
 	Eigen::Vector3d m_velocity = Eigen::Vector3d::Zero();
-	/** Well-constrained matches of the last disagreement_window_s while
-	 * stalled (stalled_velocity_baseline_s). */
+	/** Well-constrained matches while stalled, of the last
+	 * disagreement_window_s or twice stalled_velocity_baseline_s. */
 	std::deque<std::pair<double, mrpt::poses::CPose2D>> m_stalledMatches;
 	/** While stalled: the translation velocity between the newest match
 	 * and one at least stalled_velocity_baseline_s older, if any. */
