@@ -1,6 +1,8 @@
 /* hslam: keyframe store (see CKeyframeStore.h). */
 #include <hslam/matching/CKeyframeStore.h>
 
+#include "point_scatter.h"
+
 #include <mrpt/math/wrap2pi.h>
 
 #include <Eigen/Eigenvalues>
@@ -15,16 +17,8 @@ namespace
 bool fitNormal(const common::TScanPoints& pts, size_t first, size_t last, Eigen::Vector2d& normal)
 {
 	if (last < first + 2) return false;
-	Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-	for (size_t i = first; i <= last; ++i) mean += Eigen::Vector2d(pts.xy[i].x, pts.xy[i].y);
-	mean /= static_cast<double>(last - first + 1);
-	Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
-	for (size_t i = first; i <= last; ++i)
-	{
-		const Eigen::Vector2d d = Eigen::Vector2d(pts.xy[i].x, pts.xy[i].y) - mean;
-		scatter += d * d.transpose();
-	}
-	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(scatter);
+	const auto eig = detail::scatterOf(last - first + 1, [&](size_t j)
+									   { return Eigen::Vector2d(pts.xy[first + j].x, pts.xy[first + j].y); });
 	if (eig.eigenvalues()[1] <= 0 || eig.eigenvalues()[0] > 0.25 * eig.eigenvalues()[1]) return false;
 	normal = eig.eigenvectors().col(0);
 	return true;

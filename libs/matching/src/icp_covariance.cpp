@@ -1,5 +1,6 @@
 #include <hslam/matching/icp_covariance.h>
 
+#include "point_scatter.h"
 #include "reference_points.h"
 
 #include <Eigen/Eigenvalues>
@@ -21,16 +22,7 @@ template <class Reference>
 bool fitNormal(const Reference& ref, const std::vector<size_t>& idx, Eigen::Vector2d& normal)
 {
 	if (idx.size() < 3) return false;
-	Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-	for (size_t i : idx) mean += ref.point(i);
-	mean /= static_cast<double>(idx.size());
-	Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
-	for (size_t i : idx)
-	{
-		const Eigen::Vector2d d = ref.point(i) - mean;
-		scatter += d * d.transpose();
-	}
-	Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(scatter);
+	const auto eig = detail::scatterOf(idx.size(), [&](size_t j) { return ref.point(idx[j]); });
 	if (eig.eigenvalues()[1] <= 0 || eig.eigenvalues()[0] > 0.25 * eig.eigenvalues()[1]) return false;  // not a line
 	normal = eig.eigenvectors().col(0);
 	return true;

@@ -1,5 +1,7 @@
 #include <hslam/matching/scan_constraint.h>
 
+#include "point_scatter.h"
+
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
@@ -29,16 +31,8 @@ Eigen::Matrix2d pointInformation(const std::vector<mrpt::math::TPoint2D>& pts, s
 	if (last - k < 2 && last + 1 < pts.size() && distance(pts[last + 1], pts[k]) <= reach_m) ++last;
 	if (last - k < 2 && last + 1 < pts.size() && distance(pts[last + 1], pts[k]) <= reach_m) ++last;
 	if (last - first + 1 < 4) return Eigen::Matrix2d::Zero();
-	Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-	for (size_t i = first; i <= last; ++i) mean += Eigen::Vector2d(pts[i].x, pts[i].y);
-	mean /= static_cast<double>(last - first + 1);
-	Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
-	for (size_t i = first; i <= last; ++i)
-	{
-		const Eigen::Vector2d d = Eigen::Vector2d(pts[i].x, pts[i].y) - mean;
-		scatter += d * d.transpose();
-	}
-	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(scatter);
+	const auto eig = detail::scatterOf(last - first + 1, [&](size_t j)
+									   { return Eigen::Vector2d(pts[first + j].x, pts[first + j].y); });
 	// A corner or a pillar spreads across by more than range noise does
 	// (a few centimetres); a sparse stretch of wall, four points 10 cm apart
 	// with 1 cm of noise, is still a line (as a ratio of spreads it was not,

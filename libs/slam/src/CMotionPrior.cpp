@@ -148,7 +148,7 @@ void CMotionPrior::measureStalledVelocity(const mrpt::poses::CPose2D& measured, 
 	// Simulated floor laps, readings creeping: a match 0.39 m ahead of the
 	// lagging estimate after a bare stretch, measured against the match
 	// 0.2 s before, set 2.7 m/s (truth 0.8); the prior then ran 20 m ahead.
-	// kept over the stall window, or twice the baseline if that is longer
+	// Matches are kept over the stall window, or twice the baseline if longer.
 	const double keep_s = std::max(m_options.disagreement_window_s, 2.0 * m_options.stalled_velocity_baseline_s);
 	while (!m_stalledMatches.empty() && m_stalledMatches.front().first < t_s - keep_s) m_stalledMatches.pop_front();
 	const std::pair<double, mrpt::poses::CPose2D>* base = nullptr;
@@ -201,10 +201,14 @@ void CMotionPrior::observePose(const mrpt::poses::CPose2D& pose, double t_s)
 		// (simulated floor, readings frozen at 0.8 m/s: 0.52 m/s within a
 		// second, ATE 1.30 m; held, 0.24 m). Only well-constrained matches
 		// re-measure it then (observeMatch): a stop is seen where walls are.
-		if (t_s > base_s && !m_faultAtSpeed && stalledBaseline())
-			m_velocity.z() = possibleVelocity(pose - basePose, t_s - base_s).z();  // the translation from matches
-		else if (m_measuredVelocity_s != t_s && t_s > base_s && !m_faultAtSpeed)
-			m_velocity = possibleVelocity(pose - basePose, t_s - base_s);
+		if (t_s > base_s && !m_faultAtSpeed)
+		{
+			const Eigen::Vector3d v = possibleVelocity(pose - basePose, t_s - base_s);
+			if (stalledBaseline())
+				m_velocity.z() = v.z();  // the translation comes from matches (measureStalledVelocity)
+			else if (m_measuredVelocity_s != t_s)
+				m_velocity = v;
+		}
 		if (m_lastOdometryKnown)
 			m_recent.push_back({t_s, m_lastOdometry.norm(), std::abs(m_lastOdometry.phi()), d.norm(),
 								std::abs(mrpt::math::wrapToPi(d.phi()))});
