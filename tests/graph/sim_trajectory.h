@@ -86,6 +86,7 @@ inline TRunResult runBackend(const sim::CWorld& world, const std::vector<mrpt::m
 		r.frontend.push_back(kf.pose);
 		backend.addKeyframe(kf);
 	}
+	backend.flushPendingClosures();  // the end of the run
 	r.optimized = backend.optimizedPoses();
 	r.closures = backend.closures();
 	r.timing = backend.timing();

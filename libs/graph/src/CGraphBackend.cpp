@@ -61,6 +61,7 @@ TKeyframeResult CGraphBackend::addKeyframe(const TKeyframe& kf)
 	result.node = addNodeAndSequentialEdge(kf);
 	m_detector.addKeyframe(result.node, kf.points, m_graph);
 	std::vector<size_t> released;  //!< closures of earlier keyframes confirmed now
+	const size_t firstNewEdge = m_graph.edges().size();
 	if (m_options.detect_loops)
 	{
 		const auto td = std::chrono::steady_clock::now();
@@ -73,18 +74,12 @@ TKeyframeResult CGraphBackend::addKeyframe(const TKeyframe& kf)
 		for (const size_t k : released) addLoopEdge(m_closures[k]);
 		rememberVerified(result.node, firstNew);
 	}
-	const bool anyAccepted =
-		!released.empty() ||
-		std::any_of(result.closures.begin(), result.closures.end(), [](const TLoopClosure& c) { return c.accepted; });
-	if (anyAccepted)
-	{
-		result.optimization = m_graph.optimize();
-		result.optimized = true;
-		markDroppedClosures(result.optimization);
-		++m_timing.optimizations;
-		m_timing.optimize_ms += result.optimization.time_ms;
-		m_timing.max_optimize_ms = std::max(m_timing.max_optimize_ms, result.optimization.time_ms);
-	}
+	const size_t newLoopEdges = m_graph.edges().size() - firstNewEdge;
+	m_pendingLoopEdges += newLoopEdges;
+	if (newLoopEdges > 0 && closuresNeedOptimization(firstNewEdge))
+		result.optimization = optimize(), result.optimized = true;
+	else
+		m_timing.closures_deferred += newLoopEdges;
 	for (auto& c : result.closures)  // report the status after the optimiser
 		for (const auto& stored : m_closures)
 			if (c.edge >= 0 && stored.edge == c.edge) c.accepted = stored.accepted, c.reason = stored.reason;
@@ -93,6 +88,33 @@ TKeyframeResult CGraphBackend::addKeyframe(const TKeyframe& kf)
 	m_timing.total_ms += result.time_ms;
 	m_timing.max_keyframe_ms = std::max(m_timing.max_keyframe_ms, result.time_ms);
 	return result;
+}
+
+bool CGraphBackend::closuresNeedOptimization(size_t firstNewEdge) const
+{
+	for (size_t e = firstNewEdge; e < m_graph.edges().size(); ++e)
+		if (m_graph.edges()[e].kind == EEdgeKind::loop && m_graph.edgeChi2(e) > m_options.optimize_min_closure_chi2)
+			return true;
+	return false;
+}
+
+TOptimizationReport CGraphBackend::optimize()
+{
+	TOptimizationReport report = m_graph.optimize();
+	m_pendingLoopEdges = 0;
+	markDroppedClosures(report);
+	++m_timing.optimizations;
+	m_timing.optimize_ms += report.time_ms;
+	m_timing.max_optimize_ms = std::max(m_timing.max_optimize_ms, report.time_ms);
+	return report;
+}
+
+std::optional<TOptimizationReport> CGraphBackend::flushPendingClosures()
+{
+	if (m_pendingLoopEdges == 0) return std::nullopt;
+	const auto report = optimize();
+	m_timing.total_ms += report.time_ms;
+	return report;
 }
 
 CLoopClosureDetector::TRelativeCovariance CGraphBackend::relativeCovariances(size_t query) const

@@ -37,6 +37,13 @@ void CLoopClosureStage::wait() const
 	if (m_worker) m_worker->wait();
 }
 
+double CLoopClosureStage::flush()
+{
+	wait();  // the background thread is idle from here until the next process()
+	const auto report = m_backend.flushPendingClosures();
+	return report ? report->time_ms : -1.0;
+}
+
 const graph::CGraphBackend& CLoopClosureStage::backend() const
 {
 	wait();

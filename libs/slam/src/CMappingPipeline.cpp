@@ -276,7 +276,12 @@ void CMappingPipeline::updateLoopClosure(const mrpt::obs::CObservation2DRangeSca
 void CMappingPipeline::finish()
 {
 	releaseWaiting(true);
-	if (m_loop)  // the back-end thread's calls since the last finish() (waits for it)
+	if (m_loop)
+	{
+		const double flushMs = m_loop->flush();  // waits for the back-end thread
+		if (flushMs >= 0) m_timer.add("loop_closure_optimize", flushMs * 1e-3);
+	}
+	if (m_loop)  // the back-end thread's calls since the last finish()
 		for (const auto& calls = m_loop->backgroundTimings(); m_loopCallsTimed < calls.size(); ++m_loopCallsTimed)
 		{
 			const TBackendCallTiming& call = calls[m_loopCallsTimed];

@@ -6,10 +6,13 @@
  * edge whose information is the inverse of the front-end matcher's covariance
  * (floored); across an odometry gap the edge is weak (a large covariance is
  * added: never rigid). Then loop closures are searched and verified
- * (CLoopClosureDetector); the graph is optimised only when a closure is
- * accepted. Per-keyframe cost stays bounded: a linear scan over submap
- * anchors (no matching), at most max_candidates matches, and optimisation only
- * on closures.
+ * (CLoopClosureDetector); the graph is optimised only when an accepted
+ * closure disagrees with the current poses (its edge's chi2 above
+ * optimize_min_closure_chi2); closures that agree wait for the next
+ * optimisation or for flushPendingClosures() at the end of the run.
+ * Per-keyframe cost stays bounded: a linear scan over submap anchors (no
+ * matching), at most max_candidates matches, and optimisation only on
+ * closures.
  *
  * The relative uncertainty of the current keyframe with respect to each
  * candidate anchor, which sizes the search window and gates consistency,
@@ -20,6 +23,7 @@
 #include <hslam/graph/CLoopClosureDetector.h>
 #include <hslam/graph/CPoseGraph.h>
 
+#include <optional>
 #include <vector>
 
 namespace hslam::graph
@@ -36,6 +40,12 @@ struct TGraphBackendOptions
 	 * neighbouring beams are not (as [icp] covariance_correlation_factor). */
 	double loop_edge_covariance_factor = 10.0;
 	bool detect_loops = true;  //!< false: the graph only records the front-end's chain
+	/** Accepted closures whose loop edges all have at most this chi2 at the
+	 * current poses agree with the estimate: they are added to the graph
+	 * without an optimisation, which would move almost nothing, and enter the
+	 * next one (a disagreeing closure's, or flushPendingClosures() at the end
+	 * of the run). 0 = optimise at every accepted closure. */
+	double optimize_min_closure_chi2 = 2.0;
 
 	template <class V>
 	void visit(V& v)
@@ -47,6 +57,7 @@ struct TGraphBackendOptions
 		v.degrees("weak_yaw_std_deg", weak_yaw_std_rad, 0.0, 180.0);
 		v.real("loop_edge_covariance_factor", loop_edge_covariance_factor, 0.01, 1000.0);
 		v.flag("detect_loops", detect_loops);
+		v.real("optimize_min_closure_chi2", optimize_min_closure_chi2, 0.0, 1e6);
 	}
 };
 
@@ -76,6 +87,7 @@ struct TKeyframeResult
 struct TBackendTiming
 {
 	size_t keyframes = 0, candidates_tested = 0, closures_accepted = 0, optimizations = 0;
+	size_t closures_deferred = 0;  //!< accepted closures added without an optimisation of their own
 	double total_ms = 0, detect_ms = 0, optimize_ms = 0;
 	double max_keyframe_ms = 0, max_optimize_ms = 0;
 };
@@ -86,6 +98,10 @@ class CGraphBackend
 	CGraphBackend(const TGraphBackendOptions& options = {}, const TLoopClosureOptions& loopOptions = {});
 
 	TKeyframeResult addKeyframe(const TKeyframe& keyframe);
+	/** Optimises the graph if closures were added without an optimisation
+	 * since the last one (optimize_min_closure_chi2); call at the end of a run
+	 * before reading poses. Returns the report if it optimised. */
+	std::optional<TOptimizationReport> flushPendingClosures();
 
 	const CPoseGraph& graph() const { return m_graph; }
 	/** Optimised world pose of every keyframe, in the order added. */
@@ -107,6 +123,8 @@ class CGraphBackend
 	std::vector<size_t> confirmClosures(std::vector<TLoopClosure>& tested);
 	void rememberVerified(size_t node, size_t firstNew);
 	void markDroppedClosures(const TOptimizationReport& report);
+	bool closuresNeedOptimization(size_t firstNewEdge) const;
+	TOptimizationReport optimize();
 
 	TGraphBackendOptions m_options;
 	CPoseGraph m_graph;
@@ -115,6 +133,7 @@ class CGraphBackend
 	std::vector<TLoopClosure> m_closures;
 	std::vector<size_t> m_recentVerified;  //!< m_closures indices: passed verification in the confirmation window
 	TBackendTiming m_timing;
+	size_t m_pendingLoopEdges = 0;  //!< loop edges added since the last optimisation
 };
 
 }  // namespace hslam::graph

@@ -111,6 +111,12 @@ class CLoopClosureStage
 	/** The graph has been optimised at least once (an accepted closure). */
 	bool optimized() const { return backend().timing().optimizations > 0; }
 
+	/** At the end of a run (or before reading poses mid-run): waits for the
+	 * queue, then lets the back-end optimise closures it added without an
+	 * optimisation (graph::TGraphBackendOptions::optimize_min_closure_chi2).
+	 * Returns that optimisation's time in ms, or -1 if none was needed. */
+	double flush();
+
 	/** The back-end, once every keyframe queued so far has been processed. */
 	const graph::CGraphBackend& backend() const;
 	/** Returns once the background thread has processed every keyframe queued
