@@ -9,10 +9,22 @@
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <stdexcept>
 
 namespace hslam::bench
 {
+/** A short name: the folder for <dir>/sim.rawlog, else the file stem. */
+std::string rawlogName(const std::string& path)
+{
+	const std::filesystem::path p(path);
+	std::string name = p.stem() == "sim" ? p.parent_path().filename().string() : p.stem().string();
+	std::replace_if(name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)) && c != '-'; }, '_');
+	return name.substr(0, 40);
+}
+
 std::vector<TPosedScan> loadPosedScans(const std::string& rawlogPath)
 {
 	// Odometry-only pipeline with every scan accepted; only its poses are kept.

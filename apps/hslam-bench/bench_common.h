@@ -21,6 +21,11 @@ struct TPosedScan
 	mrpt::obs::CObservation2DRangeScan scan;
 };
 
+/** A short name for a rawlog in tables and keys: the folder for
+ * <dir>/sim.rawlog (simulated samples), else the file stem; characters other
+ * than letters, digits and '-' become '_'. */
+std::string rawlogName(const std::string& path);
+
 /** Reads every 2D scan of a rawlog with its dead-reckoning pose. */
 std::vector<TPosedScan> loadPosedScans(const std::string& rawlogPath);
 

@@ -230,7 +230,7 @@ TBackendRow measureBackend(const std::string& process, const std::string& config
 						   const std::string& truth, const std::string& outDir)
 {
 	TBackendRow row;
-	row.name = fs::path(rawlog).stem().string();
+	row.name = rawlogName(rawlog);
 	const std::string dir = outDir + "/" + row.name;
 	fs::create_directories(dir);
 	const auto run = [&](const std::string& tag, bool on) {

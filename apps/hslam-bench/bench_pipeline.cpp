@@ -85,15 +85,6 @@ struct TBenchRow
 	std::string icp_note;
 };
 
-/** A short name: the folder for <dir>/sim.rawlog, else the file stem. */
-std::string rawlogName(const std::string& path)
-{
-	const fs::path p(path);
-	std::string name = p.stem() == "sim" ? p.parent_path().filename().string() : p.stem().string();
-	std::replace_if(name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)) && c != '-'; }, '_');
-	return name.substr(0, 40);
-}
-
 std::string findGroundTruth(const std::string& rawlog)
 {
 	const fs::path p(rawlog);
