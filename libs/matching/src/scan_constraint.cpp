@@ -26,10 +26,8 @@ Eigen::Matrix2d pointInformation(const std::vector<mrpt::math::TPoint2D>& pts, s
 	// a wall sampled sparsely (an end wall 6 m ahead, 1 deg beams: every
 	// 10 cm) still gets two neighbours on each side, up to 3 radii away
 	const double reach_m = kSparseReachRadii * radius_m;
-	if (k - first < 2 && first > 0 && distance(pts[first - 1], pts[k]) <= reach_m) --first;
-	if (k - first < 2 && first > 0 && distance(pts[first - 1], pts[k]) <= reach_m) --first;
-	if (last - k < 2 && last + 1 < pts.size() && distance(pts[last + 1], pts[k]) <= reach_m) ++last;
-	if (last - k < 2 && last + 1 < pts.size() && distance(pts[last + 1], pts[k]) <= reach_m) ++last;
+	while (k - first < 2 && first > 0 && distance(pts[first - 1], pts[k]) <= reach_m) --first;
+	while (last - k < 2 && last + 1 < pts.size() && distance(pts[last + 1], pts[k]) <= reach_m) ++last;
 	if (last - first + 1 < 4) return Eigen::Matrix2d::Zero();
 	const auto eig = detail::scatterOf(last - first + 1, [&](size_t j)
 									   { return Eigen::Vector2d(pts[first + j].x, pts[first + j].y); });

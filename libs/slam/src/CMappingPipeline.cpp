@@ -280,14 +280,14 @@ void CMappingPipeline::finish()
 	{
 		const double flushMs = m_loop->flush();  // waits for the back-end thread
 		if (flushMs >= 0) m_timer.add("loop_closure_optimize", flushMs * 1e-3);
-	}
-	if (m_loop)  // the back-end thread's calls since the last finish()
+		// the back-end thread's calls since the last finish()
 		for (const auto& calls = m_loop->backgroundTimings(); m_loopCallsTimed < calls.size(); ++m_loopCallsTimed)
 		{
 			const TBackendCallTiming& call = calls[m_loopCallsTimed];
 			m_timer.add("loop_closure", call.keyframe_ms * 1e-3);
 			if (call.optimize_ms >= 0) m_timer.add("loop_closure_optimize", call.optimize_ms * 1e-3);
 		}
+	}
 	if (!m_loop || !m_loop->optimized() || !m_loopOptions.rerender_map || m_sonar.mappingOptions().enabled) return;
 	common::CStageTimer::CScope t(m_timer, "map_rerender");
 	const auto poses = m_loop->correctedScanPoses();
