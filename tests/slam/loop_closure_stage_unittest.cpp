@@ -347,6 +347,10 @@ TEST(LoopClosureStage, BatchWritesItsFilesAndMrptReadsTheGraph)
 	};
 	EXPECT_EQ(greenPixels(out + "/map.png"), 0u);
 	EXPECT_GT(greenPixels(out + "/map_loop_closures.png"), 20u);
+	// the sonar corners are drawn on a copy of map.png, not of the closures'
+	// picture (mrpt::img::CImage copies share their pixels)
+	ASSERT_TRUE(std::filesystem::exists(out + "/map_sonar_corners.png"));
+	EXPECT_EQ(greenPixels(out + "/map_sonar_corners.png"), 0u);
 	mrpt::graphs::CNetworkOfPoses2DInf graph;
 	graph.loadFromTextFile(out + "/graph.graph");
 	EXPECT_GT(graph.nodeCount(), 50u);  // measured 104 keyframes

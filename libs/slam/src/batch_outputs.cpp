@@ -81,7 +81,7 @@ void writeMaps(const CMappingPipeline& pipeline, const TOutputOptions& options, 
 	written.push_back(dir + "/map.png");
 	if (const auto* loops = pipeline.loopClosureStage())
 	{
-		mrpt::img::CImage closures = image;
+		mrpt::img::CImage closures = image.makeDeepCopy();  // CImage copies share pixels
 		drawLoopClosures(closures, frame, *loops);
 		savePng(closures, dir + "/map_loop_closures.png");
 		written.push_back(dir + "/map_loop_closures.png");
