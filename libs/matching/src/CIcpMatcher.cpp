@@ -77,7 +77,12 @@ TPoseMatch CIcpMatcher::bestOfRestarts(AlignAt alignAt, const mrpt::poses::CPose
 	// ICP ended 1.9 m and 25 deg off, goodness 0.82, fit 0.51; the restart
 	// from 30 deg back fitted 0.84 at the right pose).
 	const bool lowFit = restartsOnFit() && best.fit < m_options.restart_below_fit;
-	if (best.score >= m_options.restart_below_goodness && !lowFit) return best;
+	// A result pairing few points (below min_good_points) is no evidence of
+	// one basin either, however many of them it pairs: a scanner that sees two
+	// pillars pairs "all" its points in several places.
+	const bool fewPoints = m_options.restart_below_good_points &&
+		best.correspondences < static_cast<size_t>(m_options.min_good_points);
+	if (best.score >= m_options.restart_below_goodness && !lowFit && !fewPoints) return best;
 	const double step = std::clamp(std::sqrt(std::max(0.0, initialCov(2, 2))), m_options.restart_min_step_rad,
 								   m_options.restart_max_step_rad);
 	// Among results paired about as well as the best one (within

@@ -27,6 +27,7 @@ matching::CIcpMatcher::TOptions withoutPrior(matching::CIcpMatcher::TOptions o)
 	// when the prediction means something (simulated lab with its odometry
 	// removed, lines+icp: ATE 0.537 m with these restarts, below 0.1 without).
 	o.restart_below_fit = 0;
+	o.restart_below_good_points = false;  // the same choice by prior distance
 	return o;
 }
 

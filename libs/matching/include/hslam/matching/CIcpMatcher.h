@@ -7,7 +7,9 @@
  * error of 10-20 deg (seen on real logs after sharp turns) is outside it. When
  * the first result pairs fewer than restart_below_goodness of the points, or
  * fits the reference worse than restart_below_fit (alignment_fit.h: a wrong
- * basin can pair most points), ICP is restarted from seeds rotated by +-1 and +-2 steps (step = the seed's
+ * basin can pair most points), or pairs fewer than min_good_points
+ * (restart_below_good_points: a few points pair perfectly in several
+ * basins), ICP is restarted from seeds rotated by +-1 and +-2 steps (step = the seed's
  * heading standard deviation, clamped to [restart_min_step, restart_max_step])
  * and, among the results paired nearly as well as the best, the one closest
  * to the prior (Mahalanobis distance) is kept.
@@ -68,6 +70,9 @@ class CIcpMatcher
 		double restart_below_goodness = 0.7;  //!< multi-start when the first goodness is lower; 0 = never
 		/** ...or when its fit (seed_fit_sigma_m) is lower; 0 = by goodness only. */
 		double restart_below_fit = 0.7;
+		/** ...or when it pairs fewer than min_good_points scan points: few
+		 * points pair perfectly in several basins. */
+		bool restart_below_good_points = true;
 		double restart_goodness_tolerance = 0.05;  //!< results this close to the best goodness compete on prior distance
 		/** Point-to-line steps after point-to-point ICP (engine = cached;
 		 * icp_covariance.h refinedAlongNormals); 0 = none. */
@@ -124,6 +129,7 @@ class CIcpMatcher
 			v.integer("min_good_points", min_good_points, 0, 100000);
 			v.real("restart_below_goodness", restart_below_goodness, 0.0, 1.0);
 			v.real("restart_below_fit", restart_below_fit, 0.0, 1.0);
+			v.flag("restart_below_good_points", restart_below_good_points);
 			v.integer("point_to_line_steps", point_to_line_steps, 0, 50);
 			v.real("restart_goodness_tolerance", restart_goodness_tolerance, 0.0, 1.0);
 			v.degrees("restart_min_step_deg", restart_min_step_rad, 0.1, 90.0);
