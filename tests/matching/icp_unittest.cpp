@@ -60,6 +60,15 @@ struct TRoomView
 		}
 		index.build(xs, ys);
 	}
+
+	/** The n scan points nearest the robot. */
+	std::vector<TPoint2D> nearestScanPoints(size_t n) const
+	{
+		std::vector<TPoint2D> near = scan;
+		std::sort(near.begin(), near.end(), [](const TPoint2D& a, const TPoint2D& b) { return a.norm() < b.norm(); });
+		near.resize(n);
+		return near;
+	}
 };
 }  // namespace
 
@@ -80,9 +89,7 @@ TEST(IcpMatcher, AFewPointsPairingPerfectlyMakeAWeakMatchAtBest)
 	// view with enough points is good. The room of the tests above, seen
 	// from where it is, by its 40 points nearest the robot and by all.
 	const TRoomView view;
-	std::vector<TPoint2D> near = view.scan;
-	std::sort(near.begin(), near.end(), [](const TPoint2D& a, const TPoint2D& b) { return a.norm() < b.norm(); });
-	near.resize(40);
+	const std::vector<TPoint2D> near = view.nearestScanPoints(40);
 	CIcpMatcher::TOptions o;
 	o.engine = "cached";
 	const CPose2D truth(0.3, -0.2, 0);
@@ -107,9 +114,7 @@ TEST(IcpMatcher, AFewPointMatchIsRestartedHoweverWellItPairs)
 	// (the open hall with a 5.6 m scanner, FrontEndScenarios). Here the
 	// restarts find nothing better and the result stays at the truth.
 	const TRoomView view;
-	std::vector<TPoint2D> near = view.scan;
-	std::sort(near.begin(), near.end(), [](const TPoint2D& a, const TPoint2D& b) { return a.norm() < b.norm(); });
-	near.resize(40);
+	const std::vector<TPoint2D> near = view.nearestScanPoints(40);
 	CIcpMatcher::TOptions o;
 	o.engine = "cached";
 	o.restart_below_good_points = false;
