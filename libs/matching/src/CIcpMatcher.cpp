@@ -80,8 +80,7 @@ TPoseMatch CIcpMatcher::bestOfRestarts(AlignAt alignAt, const mrpt::poses::CPose
 	// A result pairing few points (below min_good_points) is no evidence of
 	// one basin either, however many of them it pairs: a scanner that sees two
 	// pillars pairs "all" its points in several places.
-	const bool fewPoints = m_options.restart_below_good_points &&
-		best.correspondences < static_cast<size_t>(m_options.min_good_points);
+	const bool fewPoints = m_options.restart_below_good_points && pairsTooFewPoints(best);
 	if (best.score >= m_options.restart_below_goodness && !lowFit && !fewPoints) return best;
 	const double step = std::clamp(std::sqrt(std::max(0.0, initialCov(2, 2))), m_options.restart_min_step_rad,
 								   m_options.restart_max_step_rad);
@@ -216,6 +215,11 @@ double CIcpMatcher::fit(const CPointIndex2D& reference, const mrpt::maps::CSimpl
 	return alignmentFit(reference, current, pose, m_options.seed_fit_sigma_m, m_options.seed_fit_max_segment_m);
 }
 
+bool CIcpMatcher::pairsTooFewPoints(const TPoseMatch& result) const
+{
+	return result.correspondences < static_cast<size_t>(m_options.min_good_points);
+}
+
 bool CIcpMatcher::restartsOnFit() const { return m_options.restart_below_fit > 0 && m_options.seed_fit_sigma_m > 0; }
 
 TPoseMatch CIcpMatcher::withQuality(TPoseMatch result) const
@@ -227,9 +231,7 @@ TPoseMatch CIcpMatcher::withQuality(TPoseMatch result) const
 	result.quality = result.score < m_options.fail_goodness  ? EMatchQuality::failed
 					 : result.score < m_options.min_goodness ? EMatchQuality::weak
 															 : EMatchQuality::good;
-	if (result.quality == EMatchQuality::good &&
-		result.correspondences < static_cast<size_t>(m_options.min_good_points))
-		result.quality = EMatchQuality::weak;
+	if (result.quality == EMatchQuality::good && pairsTooFewPoints(result)) result.quality = EMatchQuality::weak;
 	return result;
 }
 

@@ -185,6 +185,9 @@ class CIcpMatcher
    private:
 	/** Whether a first result is also restarted on its fit (restart_below_fit, seed_fit_sigma_m > 0). */
 	bool restartsOnFit() const;
+	/** Fewer paired points than min_good_points: weak at best, and restarted
+	 * (restart_below_good_points) however well they pair. */
+	bool pairsTooFewPoints(const TPoseMatch& result) const;
 	/** The first alignment, or the best of the restarts around the prior. */
 	template <class AlignAt>
 	TPoseMatch bestOfRestarts(AlignAt alignAt, const mrpt::poses::CPose2D& initialGuess,
