@@ -25,15 +25,21 @@
 #   mount     the laser 0.25 m ahead, 0.05 m left, turned 3 deg (not in VARIANTS
 #             by default: the rawlog's sensor pose says so, as a grabber's would)
 #   upsidedown  the laser mounted upside down (sensorPose roll 180 deg)
+#   artefacts  a real scanner's faults: 5 % of returns lost, 1 % spurious short
+#             ones, mixed pixels at every other range edge (not in VARIANTS by
+#             default)
 #   narrow    a depth camera's fake scan: 60 deg, 0.1 deg, 4.5 m, 10 Hz (not in
 #             VARIANTS by default: the product's scanners cover 180 deg or more;
 #             floor and long corridor are slightly worse than odometry, see
 #             docs/pose-estimation.md)
 #
+# A variant may combine others with "+": slowscan+fast is csail's spacing with
+# fast turns (up to 100 deg between scans).
+#
 #   scripts/stress-matrix.sh out/stress
 #   WORLDS="open-hall" VARIANTS="urg" scripts/stress-matrix.sh out/hall --set icp.min_good_points=0
 set -euo pipefail
-[ $# -ge 1 ] || { sed -n 2,34p "$0"; exit 2; }
+[ $# -ge 1 ] || { sed -n 2,40p "$0"; exit 2; }
 out=$1; shift
 here=$(cd "$(dirname "$0")/.." && pwd)
 bin=${HSLAM_BIN:-$here/build/bin}
@@ -58,6 +64,7 @@ variantSettings() {
 		creep) echo "--set odometry.fault=freeze --set odometry.fault_motion_scale=0.01" ;;
 		mount) echo "--set laser.x_m=0.25 --set laser.y_m=0.05 --set laser.yaw_deg=3" ;;
 		upsidedown) echo "--set laser.upside_down=true" ;;
+		artefacts) echo "--set laser.dropout_probability=0.05 --set laser.spurious_probability=0.01 --set laser.mixed_pixel_probability=0.5" ;;
 		narrow) echo "--set laser.preset=custom --set laser.fov_deg=60 --set laser.resolution_deg=0.1 --set laser.max_range_m=4.5 --set laser.rate_hz=10" ;;
 		*) echo "stress-matrix: unknown variant '$1'" >&2; return 2 ;;
 	esac
@@ -68,7 +75,8 @@ echo "world,variant,ate_m,odometry_ate_m,rpe5_m,odometry_rpe5_m,scans" > "$out/m
 for world in $worlds; do
 	[ -f "$here/config_ini/sim-$world.ini" ] || { echo "stress-matrix: no config_ini/sim-$world.ini" >&2; exit 2; }
 	for variant in $variants; do
-		settings=$(variantSettings "$variant")
+		settings=""
+		for part in ${variant//+/ }; do settings="$settings $(variantSettings "$part")"; done
 		run=$out/$world-$variant
 		rm -rf "$run" && mkdir -p "$run"
 		# shellcheck disable=SC2086  # the settings are words

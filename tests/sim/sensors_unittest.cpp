@@ -82,6 +82,49 @@ TEST(SimLaser, NoiseHasTheConfiguredSigmaAndPresetsTheirGeometry)
 	EXPECT_DOUBLE_EQ(l100.maxRange_m(), 20.0);
 }
 
+TEST(SimLaser, ArtefactsComeAtTheirRatesAndOnlyWhenAsked)
+{
+	// A wall at 3 m with a box in front of it (1.5 m, beams 80-100): two
+	// edges where neighbouring beams jump by 1.5 m.
+	CWorld w = wallAtX(3.0);
+	w.addSegment(TSegment{{1.5, -0.25}, {1.5, 0.25}, {}});
+	std::mt19937_64 rngA(5), rngB(5);
+	mrpt::obs::CObservation2DRangeScan plain, again;
+	CLaserSimulator(exactLaser()).simulate(w, TPose2D{0, 0, 0}, rngA, plain);
+	CLaserSimulator(exactLaser()).simulate(w, TPose2D{0, 0, 0}, rngB, again);
+	EXPECT_EQ(rngA(), rngB());  // all off: nothing drawn, a sample stays what it was
+	TLaserOptions o = exactLaser();
+	o.dropout_probability = 0.1;
+	o.spurious_probability = 0.05;
+	o.mixed_pixel_probability = 1.0;
+	CLaserSimulator laser(o);
+	std::mt19937_64 rng(7);
+	int valid = 0, lost = 0, shorter = 0, between = 0, scans = 400;
+	for (int k = 0; k < scans; ++k)
+	{
+		mrpt::obs::CObservation2DRangeScan scan;
+		laser.simulate(w, TPose2D{0, 0, 0}, rng, scan);
+		for (size_t i = 0; i < scan.getScanSize(); ++i)
+		{
+			if (!plain.getScanRangeValidity(i)) continue;
+			const double truth = plain.getScanRange(i), r = scan.getScanRange(i);
+			const bool edge = i > 0 && i + 1 < scan.getScanSize() &&
+							  (std::abs(plain.getScanRange(i - 1) - truth) > 0.3 ||
+							   std::abs(plain.getScanRange(i + 1) - truth) > 0.3);
+			if (edge && truth < 2.0 && scan.getScanRangeValidity(i) && r > truth + 1e-6 && r < 3.0) ++between;
+			if (edge) continue;
+			++valid;
+			if (!scan.getScanRangeValidity(i)) ++lost;
+			else if (r < truth - 1e-6) ++shorter;
+		}
+	}
+	EXPECT_NEAR(static_cast<double>(lost) / valid, 0.1, 0.01);
+	EXPECT_NEAR(static_cast<double>(shorter) / valid, 0.9 * 0.05, 0.01);  // of those not lost
+	// both edge beams of the box (on the nearer surface) are mixed in every
+	// scan, unless lost or made spurious after
+	EXPECT_GT(between, static_cast<int>(2 * scans * 0.8));
+}
+
 TEST(SimSonar, RingHasTheP3dxGeometryAndObservationLayout)
 {
 	TSonarOptions o;

@@ -1,6 +1,10 @@
 /* hslam sim: SICK LMS laser scanner model (thesis 3.x hardware: SICK LMS200 on
  * the P3-DX). One exact ray per beam against the world (walls, furniture,
  * people's legs), Gaussian range noise, range quantisation, max range.
+ * Optional artefacts of real scanners (all off by default): lost returns
+ * (glass, black surfaces), spurious short returns (dust, reflections) and
+ * mixed pixels at range discontinuities (the SICK LMS's beam spot straddles
+ * an edge and reports a range between the two surfaces).
  * Output is a real mrpt::obs::CObservation2DRangeScan in MRPT's convention
  * (rightToLeft, beam i at -fov/2 + i*fov/(N-1) in the sensor frame, beams
  * beyond max range invalid with range = maxRange), plus the object tag of
@@ -31,6 +35,13 @@ struct TLaserOptions
 	double noise_std_m = 0.01;  //!< Gaussian range noise (LMS200 datasheet: ~1 cm)
 	double range_resolution_m = 0.01;  //!< reported range step (cm mode); 0 = none
 	double rate_hz = 10;  //!< scans per second (thesis: 10 Hz processing)
+	double dropout_probability = 0;  //!< a return is lost (reported invalid)
+	double spurious_probability = 0;  //!< a return is replaced by a short one, uniform in [0.1 m, true range)
+	/** At a discontinuity of more than mixed_pixel_jump_m between neighbouring
+	 * beams, the nearer surface's edge beam returns a range uniform between
+	 * the two surfaces with this probability. */
+	double mixed_pixel_probability = 0;
+	double mixed_pixel_jump_m = 0.3;
 	double x_m = 0.021, y_m = 0, z_m = 0.3, yaw_rad = 0;  //!< sensor pose on the robot (Aria LaserX 21 mm)
 	/** Mounted upside down (roll 180 deg in the scan's sensorPose): the beams
 	 * sweep clockwise seen from above, as such a laser's do. */
@@ -48,6 +59,10 @@ struct TLaserOptions
 		v.real("noise_std_m", noise_std_m, 0.0, 1.0);
 		v.real("range_resolution_m", range_resolution_m, 0.0, 0.1);
 		v.real("rate_hz", rate_hz, 0.1, 100.0);
+		v.real("dropout_probability", dropout_probability, 0.0, 1.0);
+		v.real("spurious_probability", spurious_probability, 0.0, 1.0);
+		v.real("mixed_pixel_probability", mixed_pixel_probability, 0.0, 1.0);
+		v.real("mixed_pixel_jump_m", mixed_pixel_jump_m, 0.01, 100.0);
 		v.real("x_m", x_m, -2.0, 2.0);
 		v.real("y_m", y_m, -2.0, 2.0);
 		v.real("z_m", z_m, 0.0, 3.0);
@@ -77,6 +92,10 @@ class CLaserSimulator
 	const TLaserOptions& options() const { return m_opts; }
 
    private:
+	/** The artefacts (dropout, spurious, mixed pixels) on one scan's true
+	 * ranges; draws nothing when all are off (samples stay as they were). */
+	void addArtefacts(std::vector<double>& range_m, std::vector<char>& valid, std::mt19937_64& rng) const;
+
 	TLaserOptions m_opts;
 	size_t m_beams = 181;
 	double m_fov = M_PI, m_maxRange = 8.0;
