@@ -83,6 +83,13 @@ TScores runDefault(const std::string& folder, const std::vector<std::string>& ov
 const std::vector<std::string> kPointToPointStandstillCheck{"icp.standstill_point_to_line_steps=0",
 															"icp.standstill_fit_max_segment_m=0"};
 
+/** The keyframe policy before the twenty-third round: a keyframe wherever the
+ * estimate had moved far enough, placed by ICP or not. Several failure
+ * classes below were found, and their remedies measured, under it; the
+ * rule that only ICP places keyframes contains some of them as well, so
+ * their counterfactuals pin the old policy. */
+const std::string kAnyKeyframes = "pose_estimation.keyframes_after_icp_only=false";
+
 std::string shipped(const std::string& name) { return std::string(HSLAM_SOURCE_DIR) + "/rawlog_samples/" + name; }
 
 /** Simulates config_ini/sim-<name>.ini into dir (a few seconds). */
@@ -385,6 +392,29 @@ TEST(FrontEndScenarios, LongCorridorLeavesTheAxisToOdometry)
 	EXPECT_LT(s.rpe5_m, 0.75 * s.odometry_rpe5_m);
 }
 
+TEST(FrontEndScenarios, FastDriveWithNoisyOdometryKeepsTheMapsHeading)
+{
+	// The 200 m corridor at 1.2 m/s with ten times the sample's odometry
+	// noise (stress matrix variant fast+noisy): ICP ran every 0.5 m of
+	// odometry travel, the line matcher in between (frame to frame). A
+	// keyframe added at a line step's pose carried odometry's heading error
+	// into the ICP reference, and the next ICP matches agreed with that
+	// map: the estimate's heading followed odometry's by 10 deg. Keyframes
+	// now come only where ICP placed the scan, and a keyframe due runs ICP
+	// ([pose_estimation] keyframes_after_icp_only).
+	hslam::testing::CTempDir dir;
+	const auto folder = simulated("long-corridor", dir,
+								  "--set path.cruise_speed_mps=1.2 --set path.turn_rate_deg_s=100 "
+								  "--set robot.wheel_noise_m_per_sqrt_m=0.01 --set robot.rotation_noise_rad_per_sqrt_rad=0.03");
+	const TRemedy r = withAndWithout(folder, "pose_estimation.keyframes_after_icp_only=false", "fast, noisy corridor");
+	EXPECT_LT(r.on.ate_m, 0.2 * r.on.odometry_ate_m);  // measured 0.371 m (odometry 2.80 m)
+	EXPECT_LT(r.on.rpe5_m, 0.5 * r.on.odometry_rpe5_m);  // measured 0.056 m (odometry 0.264 m)
+	// measured 1.08 m (before [odometry_timing] max_cost_ratio = 0.5,
+	// hslam-process also fitted a 0.15 s lead to the slip and ran a second
+	// pass with it: 2.71 m): this test can fail
+	EXPECT_LT(r.on.ate_m, 0.5 * r.off.ate_m);
+}
+
 TEST(FrontEndScenarios, LongRangeLaserDownACorridorIsNotPinnedByGrazingPoints)
 {
 	// The corridor sample seen by a 180 deg, 0.5 deg, 20 m scanner (an LMS
@@ -405,11 +435,13 @@ TEST(FrontEndScenarios, LongRangeLaserDownACorridorIsNotPinnedByGrazingPoints)
 	// (refusing matches that fit worse than the prediction, [pose_estimation]
 	// max_fit_loss_vs_prediction, stops the creep as well: 0.036 m; the
 	// counterfactuals go without it)
+	// (and only ICP placing keyframes contains it too: 0.310 m; the
+	// counterfactuals pin the old keyframe policy)
 	const TScores mrptRule = runDefault(folder, {"icp.stage_step_fraction=0", "icp.covariance_full_weight_spacing_m=0",
-												 "pose_estimation.max_fit_loss_vs_prediction=-1"});
+												 "pose_estimation.max_fit_loss_vs_prediction=-1", kAnyKeyframes});
 	const TScores grazingOut =
 		runDefault(folder, {"icp.stage_step_fraction=0", "icp.max_incidence_deg=85", "icp.covariance_full_weight_spacing_m=0",
-							"pose_estimation.max_fit_loss_vs_prediction=-1"});
+							"pose_estimation.max_fit_loss_vs_prediction=-1", kAnyKeyframes});
 	print("corridor at 20 m, default", byDefault);
 	print("corridor at 20 m, every stage to 1e-6", mrptRule);
 	print("corridor at 20 m, every stage to 1e-6, grazing points not aligned", grazingOut);
@@ -479,9 +511,16 @@ TEST(FrontEndScenarios, AnIcpMatchFittingWorseThanThePredictionIsNotUsed)
 	hslam::testing::CTempDir dir;
 	const auto folder = simulated("corridor", dir, "--set laser.max_range_m=30");
 	const TRemedy r = withAndWithout(folder, "pose_estimation.max_fit_loss_vs_prediction=-1", "corridor at 30 m");
-	EXPECT_LT(r.on.ate_m, 0.12);  // measured 0.062 m (odometry 0.826 m)
-	EXPECT_LT(r.on.rpe5_m, 0.5 * r.on.odometry_rpe5_m);  // measured 0.015 m (odometry 0.039 m)
-	EXPECT_GT(r.off.rpe5_m, r.off.odometry_rpe5_m);  // measured 0.158 m: the slip, worse than odometry
+	EXPECT_LT(r.on.ate_m, 0.12);  // measured 0.043 m (odometry 0.826 m)
+	EXPECT_LT(r.on.rpe5_m, 0.5 * r.on.odometry_rpe5_m);  // measured 0.014 m (odometry 0.039 m)
+	// Only ICP placing keyframes avoids this slip as well (without the rule:
+	// 0.016 m); under the old keyframe policy the rule still decides.
+	const TScores off = runDefault(folder, {"pose_estimation.max_fit_loss_vs_prediction=-1", kAnyKeyframes});
+	const TScores oldOn = runDefault(folder, {kAnyKeyframes});
+	print("corridor at 30 m, any keyframes, the rule off", off);
+	print("corridor at 30 m, any keyframes", oldOn);
+	EXPECT_GT(off.rpe5_m, off.odometry_rpe5_m);  // measured 0.158 m: the slip, worse than odometry
+	EXPECT_LT(oldOn.rpe5_m, 0.5 * oldOn.odometry_rpe5_m);
 }
 
 TEST(FrontEndScenarios, WornTyresAreCalibratedOutByMatching)
@@ -541,15 +580,26 @@ TEST(FrontEndScenarios, ShortRangeScannerInAnOpenHallIsNoWorseThanOdometry)
 	// the estimate 0.31 m and 3.4 deg off the truth.
 	hslam::testing::CTempDir dir;
 	const auto hall = simulated("open-hall", dir, customLaser(240, 0.36, 5.6, 10));
+	// Since the twenty-third round only ICP places keyframes, and a scan of
+	// fewer than min_good_points is not made one without it: here no ICP
+	// match is fused after the first keyframe, and the estimate is the line
+	// matcher's and odometry's (four other seeds: RPE 5 m 0.074 m against
+	// odometry's 0.078, 0.19-0.23 m when such scans were made keyframes).
 	const TScores s = runDefault(hall);
-	const TScores byGoodness = runDefault(hall, {"icp.min_good_points=0"});
-	const TScores notRestarted = runDefault(hall, {"icp.restart_below_good_points=false"});
 	print("open hall, 5.6 m scanner", s);
-	print("open hall, 5.6 m scanner, few-point matches good", byGoodness);
-	print("open hall, 5.6 m scanner, few-point matches not restarted", notRestarted);
-	EXPECT_LT(s.ate_m, 0.8 * s.odometry_ate_m);  // measured 0.58 m against 0.78 m
-	EXPECT_LT(s.ate_m, 0.85 * notRestarted.ate_m);  // measured 0.73 m: this test can fail
-	EXPECT_LT(s.rpe5_m, 0.85 * notRestarted.rpe5_m);  // measured 0.102 against 0.130 m (odometry 0.078)
+	EXPECT_LT(s.ate_m, 0.95 * s.odometry_ate_m);  // measured 0.725 m against 0.780 m
+	EXPECT_LT(s.rpe5_m, 1.05 * s.odometry_rpe5_m);  // measured 0.0794 against 0.0785 m
+	// The remedies for few-point matches, measured under the old keyframe
+	// policy, where ICP matched such scans.
+	const TScores old = runDefault(hall, {kAnyKeyframes});
+	const TScores byGoodness = runDefault(hall, {"icp.min_good_points=0", kAnyKeyframes});
+	const TScores notRestarted = runDefault(hall, {"icp.restart_below_good_points=false", kAnyKeyframes});
+	print("open hall, 5.6 m scanner, any keyframes", old);
+	print("open hall, 5.6 m scanner, any keyframes, few-point matches good", byGoodness);
+	print("open hall, 5.6 m scanner, any keyframes, few-point matches not restarted", notRestarted);
+	EXPECT_LT(old.ate_m, 0.8 * old.odometry_ate_m);  // measured 0.58 m against 0.78 m
+	EXPECT_LT(old.ate_m, 0.85 * notRestarted.ate_m);  // measured 0.73 m: this test can fail
+	EXPECT_LT(old.rpe5_m, 0.85 * notRestarted.rpe5_m);  // measured 0.102 against 0.130 m (odometry 0.078)
 	EXPECT_LT(notRestarted.ate_m, 0.9 * byGoodness.ate_m);  // measured 0.84 m: this test can fail
 }
 
@@ -564,8 +614,12 @@ TEST(FrontEndScenarios, MatchesTheScanProvesRightAreTakenBeyondTheGate)
 	// heading slipped 15 deg at the third corner.
 	hslam::testing::CTempDir dir;
 	const auto lagged = simulated("floor", dir, "--set odometry.fault=lag --set odometry.fault_lag_s=0.3");
-	const TScores taken = runDefault(lagged, {"odometry_timing.estimate_offset=false"});
-	const TScores gated = runDefault(lagged, {"odometry_timing.estimate_offset=false", "ukf.refuted_prediction_min_fit=0"});
+	// Measured under the old keyframe policy (kAnyKeyframes). Where only
+	// ICP places keyframes the gate alone no longer slips here: 0.092 m,
+	// and 0.203 m with the rule (docs/pose-estimation.md, twenty-third round).
+	const TScores taken = runDefault(lagged, {"odometry_timing.estimate_offset=false", kAnyKeyframes});
+	const TScores gated =
+		runDefault(lagged, {"odometry_timing.estimate_offset=false", "ukf.refuted_prediction_min_fit=0", kAnyKeyframes});
 	print("floor, odometry 0.3 s late, refuted predictions widened", taken);
 	print("floor, odometry 0.3 s late, the gate alone", gated);
 	EXPECT_GT(gated.ate_m, 1.2);  // measured 1.47 m: this test can fail
@@ -595,9 +649,10 @@ TEST(FrontEndScenarios, LateOdometryIsReadAtTheScansTime)
 	print("floor, odometry 0.3 s late, offset fitted", fitted);
 	print("floor, odometry 0.3 s late, offset given", given);
 	print("floor, odometry 0.3 s late, no offset", none);
-	EXPECT_LT(fitted.ate_m, fitted.odometry_ate_m);  // measured 0.31 m against 0.64 m
-	EXPECT_LT(fitted.ate_m, 0.6 * none.ate_m);  // 0.86 m without
-	EXPECT_LT(given.ate_m, 0.15);  // measured 0.088 m (0.070 m on time)
+	// In one pass the offset is applied only once its fit is clear ([odometry_timing]
+	// max_cost_ratio), late in the run: measured 0.195 m against 0.60 m.
+	EXPECT_LT(fitted.ate_m, fitted.odometry_ate_m);
+	EXPECT_LT(given.ate_m, 0.15);  // measured 0.055 m (0.070 m on time)
 	// hslam-process runs the rawlog again with the fitted offset from the
 	// start ([odometry_timing] second_pass): the first corner is read right too.
 	batch::TBatchRequest request;
@@ -613,7 +668,8 @@ TEST(FrontEndScenarios, LateOdometryIsReadAtTheScansTime)
 	std::cout << "floor, odometry 0.3 s late, hslam-process (second pass): ATE "
 			  << twice.evaluation->ate.position_m.rmse << " m\n";
 	EXPECT_NE(out.str().find("second pass"), std::string::npos);
-	EXPECT_LT(twice.evaluation->ate.position_m.rmse, 0.15);  // measured 0.083 m
+	EXPECT_LT(twice.evaluation->ate.position_m.rmse, 0.15);  // measured 0.060 m
+	EXPECT_LT(twice.evaluation->ate.position_m.rmse, 0.6 * none.ate_m);  // 0.159 m without the offset
 	// with a reference, evaluation.json also says how well each trajectory
 	// explains the scans (eval/scan_consistency.h)
 	const std::string json = hslam::testing::readTextFile(dir.file("batch") + "/evaluation.json");

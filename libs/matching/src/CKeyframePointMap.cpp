@@ -8,12 +8,12 @@
 
 namespace hslam::matching
 {
-bool CKeyframePointMap::wantsKeyframe(const mrpt::poses::CPose2D& pose) const
+bool CKeyframePointMap::wantsKeyframe(const mrpt::poses::CPose2D& pose, double spacing) const
 {
 	if (m_keyframes.empty()) return true;
 	const auto& last = m_keyframes.back().pose;
-	return pose.distanceTo(last) >= m_options.insertion_distance_m ||
-		   std::abs(fusion::wrapToPi(pose.phi() - last.phi())) >= m_options.insertion_angle_rad;
+	return pose.distanceTo(last) >= spacing * m_options.insertion_distance_m ||
+		   std::abs(fusion::wrapToPi(pose.phi() - last.phi())) >= spacing * m_options.insertion_angle_rad;
 }
 
 void CKeyframePointMap::addKeyframe(const mrpt::poses::CPose2D& pose, const std::vector<mrpt::math::TPoint2D>& points)

@@ -61,8 +61,9 @@ class CKeyframePointMap
 	bool empty() const { return m_keyframes.empty(); }
 	size_t keyframeCount() const { return m_keyframes.size(); }
 
-	/** True if a scan taken at `pose` should become a keyframe. */
-	bool wantsKeyframe(const mrpt::poses::CPose2D& pose) const;
+	/** True if a scan taken at `pose` should become a keyframe: it lies
+	 * `spacing` x the insertion distance or angle from the newest one. */
+	bool wantsKeyframe(const mrpt::poses::CPose2D& pose, double spacing = 1.0) const;
 	/** Adds a keyframe: `points` in the robot frame at world pose `pose`. */
 	void addKeyframe(const mrpt::poses::CPose2D& pose, const std::vector<mrpt::math::TPoint2D>& points);
 

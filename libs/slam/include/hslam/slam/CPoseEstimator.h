@@ -89,6 +89,18 @@ struct TPoseEstimationOptions
 	/** While odometry counts as stalled, an ICP keyframe is also added when
 	 * this long (s) has passed since the last one (0 = by travel only). */
 	double stalled_keyframe_every_s = 1.0;
+	/** icp and lines+icp with point ICP: a keyframe of the ICP reference is
+	 * added only at a scan whose own ICP match the filter fused (the first
+	 * keyframe and a stall's timed ones excepted). A pose carried there by
+	 * odometry and frame-to-frame line matches brings their drift into the
+	 * map, and later matches against the map then agree with it. */
+	bool keyframes_after_icp_only = true;
+	/** ...but once the estimate is this many keyframe spacings ([icp_map]
+	 * insertion_distance_m / insertion_angle_deg) from the newest keyframe
+	 * without an ICP placement, a scan of at least [icp] min_good_points
+	 * points is added at the estimate: the reference must not stop at the
+	 * first keyframe when ICP fails for a while. */
+	double keyframe_without_icp_spacings = 2.0;
 	/** icp and lines+icp: "mrpt" = MRPT's point-to-point ICP against the
 	 * points of recent keyframes ([icp], [icp_map]); "point_to_line" =
 	 * CPointToLineIcp against the local map of the keyframe store
@@ -132,6 +144,8 @@ struct TPoseEstimationOptions
 		v.real("stalled_unconstrained_max_fraction", stalled_unconstrained_max_fraction, 0.0, 0.5);
 		v.real("stalled_normal_radius_m", stalled_normal_radius_m, 0.01, 10.0);
 		v.real("stalled_keyframe_every_s", stalled_keyframe_every_s, 0.0, 1000.0);
+		v.flag("keyframes_after_icp_only", keyframes_after_icp_only);
+		v.real("keyframe_without_icp_spacings", keyframe_without_icp_spacings, 1.0, 1000.0);
 		v.choice("icp_matcher", icp_matcher, {"mrpt", "point_to_line", "mrpt+point_to_line"});
 		v.flag("seed_refused_matches", seed_refused_matches);
 		v.real("max_fit_loss_vs_prediction", max_fit_loss_vs_prediction, -1.0, 1.0);

@@ -175,7 +175,7 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 												bool predictionTrusted, std::vector<matching::TPoseMatch>& results);
 	std::optional<matching::TPoseMatch> runPointToLineIcp(const common::TRangeData& scan,
 														   const std::vector<mrpt::poses::CPose2D>& seedsWorld);
-	void addKeyframeIfDue(const common::TRangeData& scan);
+	void addKeyframeIfDue(const common::TRangeData& scan, const TPoseEstimate& estimate);
 	/** After a gap of unknown motion, a match that is not good or fits
 	 * poorly is retried from the gap search's pose; the better fit is kept. */
 	void recoverAfterGap(const matching::TLineScanFrame& frame, const common::TRangeData& scan,
