@@ -90,8 +90,9 @@ struct TPoseEstimationOptions
 	 * this long (s) has passed since the last one (0 = by travel only). */
 	double stalled_keyframe_every_s = 1.0;
 	/** icp and lines+icp with point ICP: a keyframe of the ICP reference is
-	 * added only at a scan whose own ICP match the filter fused (the first
-	 * keyframe and a stall's timed ones excepted). A pose carried there by
+	 * added only at a scan whose own ICP match the filter fused, and a
+	 * keyframe due runs ICP (the first keyframe and a stall's timed ones
+	 * excepted). A pose carried there by
 	 * odometry and frame-to-frame line matches brings their drift into the
 	 * map, and later matches against the map then agree with it. */
 	bool keyframes_after_icp_only = true;

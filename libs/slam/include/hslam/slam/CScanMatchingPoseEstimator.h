@@ -32,6 +32,10 @@
  * While odometry counts as stalled (readings that creep), every ICP match is
  * checked that way (stalled_point_to_line) and keyframes also come on time
  * (stalled_keyframe_every_s), since estimated travel may not come.
+ * The ICP reference holds only scans that ICP placed (keyframes_after_icp_only:
+ * a keyframe due runs ICP; one carried by odometry and line matches would
+ * bring their drift into the map), unless none was for
+ * keyframe_without_icp_spacings keyframe spacings.
  *
  * INI sections: [pose_estimation], [line_extraction], [line_extraction_<method>], [line_matching],
  * [icp], [icp_map], [ukf], [odometry_noise], [motion_prior]. */
