@@ -232,7 +232,7 @@ std::optional<matching::TPoseMatch> CScanMatchingPoseEstimator::runIcp(
 {
 	if (seedsWorld.empty()) return std::nullopt;
 	common::CStageTimer::CScope t(m_timer, "icp");
-	if (m_options.icp_matcher == "point_to_line") return runPointToLineIcp(scan, seedsWorld);
+	if (!matchesKeyframePoints()) return runPointToLineIcp(scan, seedsWorld);
 	if (m_keyframes.empty()) return std::nullopt;
 	const mrpt::poses::CPose2D& around = seedsWorld.front();
 	const auto matchAt = [&](const matching::CIcpMatcher& icp, const mrpt::poses::CPose2D& seed)
@@ -312,7 +312,7 @@ void CScanMatchingPoseEstimator::addKeyframeIfDue(const common::TRangeData& scan
 	// four seeds against 0.074 without, odometry 0.078).
 	const bool overdue = m_keyframes.wantsKeyframe(pose, m_options.keyframe_without_icp_spacings) &&
 						 scan.points.xy.size() >= static_cast<size_t>(std::max(1, m_icp.options().min_good_points));
-	if (m_options.icp_matcher != "point_to_line" &&
+	if (matchesKeyframePoints() &&
 		((placedByMap && m_keyframes.wantsKeyframe(pose)) || overdue || onTime))
 		m_keyframes.addKeyframe(pose, scan.points.xy), m_lastKeyframe_s = scan.t_s;
 }
@@ -490,7 +490,7 @@ bool CScanMatchingPoseEstimator::wantsIcp(const std::optional<matching::TPoseMat
 	const bool lineFailed = lineMatch && !lineUsable;
 	// A keyframe due here is placed by ICP (keyframes_after_icp_only), at the
 	// keyframes' own spacing rather than at the next ICP step's.
-	const bool keyframeDue = m_options.keyframes_after_icp_only && m_options.icp_matcher != "point_to_line" &&
+	const bool keyframeDue = m_options.keyframes_after_icp_only && matchesKeyframePoints() &&
 							 m_keyframes.wantsKeyframe(currentPose());
 	return usesIcp() && (dueForIcp() || lineFailed || keyframeDue) &&
 		   (m_options.method == "icp" || m_options.icp_always || !lineUsable ||
@@ -555,7 +555,7 @@ void CScanMatchingPoseEstimator::fuseChosenMatch(const matching::TLineScanFrame&
 		}
 		return *predictionFitValue;
 	};
-	const bool pointMap = m_options.icp_matcher != "point_to_line" && !m_keyframes.empty();
+	const bool pointMap = matchesKeyframePoints() && !m_keyframes.empty();
 	const std::function<double()> fitOfPrediction = pointMap ? std::function<double()>(predictionFit) : nullptr;
 	// the prediction fits better than the ICP match: the line match stands in only if it does not fit worse either
 	const bool predictionFitsBetter = icpMatch && icpMatch->quality != EMatchQuality::failed &&

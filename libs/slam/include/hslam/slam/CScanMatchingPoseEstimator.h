@@ -136,6 +136,8 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	bool usesLines() const { return m_options.method != "icp"; }
 	bool usesIcp() const { return m_options.method != "lines"; }
 	bool usesPointToLine() const { return m_options.icp_matcher != "mrpt"; }
+	/** ICP matches against the points of the recent keyframes (CKeyframePointMap), not the store's local map. */
+	bool matchesKeyframePoints() const { return m_options.icp_matcher != "point_to_line"; }
 
 	bool dueByTime(double t_s) const;
 	bool dueForMatch(double t_s) const;
