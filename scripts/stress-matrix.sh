@@ -36,8 +36,13 @@
 # A variant may combine others with "+": slowscan+fast is csail's spacing with
 # fast turns (up to 100 deg between scans).
 #
+# SEED=N simulates every run with [simulation] seed = N instead of the
+# world's own: one draw of noise, faults and people is one sample, so a
+# default change is checked over a few seeds (SEED=1 ... SEED=4).
+#
 #   scripts/stress-matrix.sh out/stress
 #   WORLDS="open-hall" VARIANTS="urg" scripts/stress-matrix.sh out/hall --set icp.min_good_points=0
+#   SEED=2 scripts/stress-matrix.sh out/stress-seed2
 set -euo pipefail
 [ $# -ge 1 ] || { sed -n 2,40p "$0"; exit 2; }
 out=$1; shift
@@ -75,7 +80,7 @@ echo "world,variant,ate_m,odometry_ate_m,rpe5_m,odometry_rpe5_m,scans" > "$out/m
 for world in $worlds; do
 	[ -f "$here/config_ini/sim-$world.ini" ] || { echo "stress-matrix: no config_ini/sim-$world.ini" >&2; exit 2; }
 	for variant in $variants; do
-		settings=""
+		settings=${SEED:+--set simulation.seed=$SEED}
 		for part in ${variant//+/ }; do settings="$settings $(variantSettings "$part")"; done
 		run=$out/$world-$variant
 		rm -rf "$run" && mkdir -p "$run"
