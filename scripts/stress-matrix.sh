@@ -44,7 +44,8 @@
 #   WORLDS="open-hall" VARIANTS="urg" scripts/stress-matrix.sh out/hall --set icp.min_good_points=0
 #   SEED=2 scripts/stress-matrix.sh out/stress-seed2
 set -euo pipefail
-[ $# -ge 1 ] || { sed -n 2,40p "$0"; exit 2; }
+[ $# -ge 1 ] || { sed -n '2,/^set -euo/p' "$0" | sed '$d'; exit 2; }
+[[ -z ${SEED:-} || $SEED =~ ^[0-9]+$ ]] || { echo "stress-matrix: SEED must be a non-negative integer, not '$SEED'" >&2; exit 2; }
 out=$1; shift
 here=$(cd "$(dirname "$0")/.." && pwd)
 bin=${HSLAM_BIN:-$here/build/bin}
