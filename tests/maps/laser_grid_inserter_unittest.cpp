@@ -179,6 +179,44 @@ TEST(GridRendering, ImageColoursAndOrientation)
 	EXPECT_EQ(*img(1, 0, 1), kUnknownCellColour.G);  // unknown cell: marker colour
 }
 
+TEST(GridRendering, EveryPixelIsItsCellsColourAcrossTiles)
+{
+	// Cells scattered over four tiles (10-cell tiles, negative indices too),
+	// a frame that cuts through tiles and reaches past them, 2 pixels per
+	// cell: every pixel is its cell's colour from the cell's own probability
+	// (the renderer walks tiles, not cells).
+	CTiledOccupancyGrid::TOptions options;
+	options.tile_size_cells = 10;
+	CTiledOccupancyGrid grid(options);
+	for (int i = 0; i < 300; ++i)
+		grid.updateCell({(i * 7) % 23 - 11, (i * 13) % 19 - 9}, 0.37f * static_cast<float>(i % 11) - 1.8f);
+	TImageFrame frame;
+	frame.cells = {-14, 9, -12, 6};
+	frame.pixels_per_cell = 2;
+	const auto img = renderGrid(grid, frame);
+	ASSERT_EQ(img.getWidth(), 48u);
+	ASSERT_EQ(img.getHeight(), 38u);
+	size_t observed = 0;
+	for (int gy = frame.cells.gyMin; gy <= frame.cells.gyMax; ++gy)
+		for (int gx = frame.cells.gxMin; gx <= frame.cells.gxMax; ++gx)
+		{
+			const bool seen = grid.isObserved({gx, gy});
+			observed += seen ? 1 : 0;
+			const auto grey = static_cast<int>(std::lround(255.0 * (1.0 - grid.occupancyProbability({gx, gy}))));
+			const int bgr[3] = {seen ? grey : kUnknownCellColour.B, seen ? grey : kUnknownCellColour.G,
+								seen ? grey : kUnknownCellColour.R};
+			for (int d = 0; d < 4; ++d)
+			{
+				const unsigned col = static_cast<unsigned>((gx - frame.cells.gxMin) * 2 + d % 2);
+				const unsigned row = static_cast<unsigned>((frame.cells.gyMax - gy) * 2 + d / 2);
+				for (unsigned ch = 0; ch < 3; ++ch)
+					ASSERT_EQ(*img(col, row, ch), bgr[ch]) << gx << " " << gy << " channel " << ch;
+			}
+		}
+	EXPECT_GT(observed, 150u);  // 23 x 19 cells updated, most of them inside the frame
+	EXPECT_LT(observed, 24u * 19u);  // and some of the frame unknown
+}
+
 TEST(TiledOccupancyGrid, MemoryGrowsWithExploredAreaOnly)
 {
 	CTiledOccupancyGrid grid;

@@ -161,7 +161,10 @@ TEST(SonarInBatch, SonarLabelSelectsTheObservations)
 	EXPECT_EQ(result.counters.sonar_observations, 0u);
 	EXPECT_EQ(result.counters.sonar_observations_ignored, 1336u);
 	EXPECT_EQ(result.counters.sonar_readings_inserted, 0u);
-	EXPECT_EQ(eval::readPointsCsv(dir.file("sonar_corners.csv")).size(), 0u);
+	// no sonar ring used: no sonar outputs (an empty picture, copies of map.png)
+	for (const char* f : {"sonar_corners.csv", "map_sonar_corners.png", "map_laser_only.png", "map_sonar_only.png"})
+		EXPECT_FALSE(std::filesystem::exists(dir.file(f))) << f;
+	EXPECT_TRUE(std::filesystem::exists(dir.file("map.png")));
 	const auto labelled = runBatch(kLab + "/sim.rawlog", dir.file("b"), {"process.sonar_label=SONAR"});
 	EXPECT_EQ(labelled.counters.sonar_observations, 1336u);
 }

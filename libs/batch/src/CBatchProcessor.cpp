@@ -182,7 +182,7 @@ void CBatchProcessor::printSummary(const slam::CMappingPipeline& pipeline, const
 		  << "Sonar rings used: " << c.sonar_observations << " (ignored: " << c.sonar_observations_ignored
 		  << "), readings inserted into the grid: " << c.sonar_readings_inserted
 		  << (pipeline.sonarStage().mappingOptions().enabled ? "" : " ([sonar_model] enabled = false)") << "\n";
-	if (pipeline.sonarStage().tbfOptions().enabled)
+	if (pipeline.sonarStage().reportsCorners())
 		m_out << "TBF sonar corners: " << pipeline.sonarStage().corners().size() << " with support >= "
 			  << pipeline.sonarStage().tbfOptions().min_support << "\n";
 	m_out << "Tiles:            " << pipeline.grid().tileCount() << " (" << pipeline.grid().memoryBytes() / 1024
@@ -200,7 +200,7 @@ void CBatchProcessor::printSummary(const slam::CMappingPipeline& pipeline, const
 	m_out << "\nResults written to " << m_request.output_dir << "/ (map.png, tiles/, map.gridmap.gz, "
 		  << "trajectory.tum, odometry.tum, timing.csv, config_used.ini"
 		  << (pipeline.dynamicFilter() ? ", tracks.csv" : "")
-		  << (pipeline.sonarStage().tbfOptions().enabled ? ", sonar_corners.csv, map_sonar_corners.png" : "")
+		  << (pipeline.sonarStage().reportsCorners() ? ", sonar_corners.csv, map_sonar_corners.png" : "")
 		  << (pipeline.laserOnlyMap() ? ", map_laser_only.png" : "")
 		  << (pipeline.sonarOnlyMap() ? ", map_sonar_only.png" : "") << ")\n";
 	if (!result.input_error.empty())

@@ -155,7 +155,7 @@ void writeTracks(std::ostream& h, const slam::CMappingPipeline& pipeline)
 void writeSonarCorners(std::ostream& h, const slam::CMappingPipeline& pipeline)
 {
 	const auto& corners = pipeline.sonarStage().corners();
-	if (!pipeline.sonarStage().tbfOptions().enabled) return;
+	if (!pipeline.sonarStage().reportsCorners()) return;
 	h << "<h2 id=\"corners\">TBF sonar corners</h2>\n<p>" << corners.size()
 	  << " corners (map frame); also in <a href=\"sonar_corners.csv\">sonar_corners.csv</a>.</p>\n";
 	if (corners.empty()) return;

@@ -2,18 +2,59 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace hslam::maps
 {
 namespace
 {
-size_t packRgb(uint8_t r, uint8_t g, uint8_t b) { return (size_t(r) << 16) | (size_t(g) << 8) | b; }
 
-size_t cellColour(const CTiledOccupancyGrid& grid, const TGlobalCell& cell)
+/** Grey level of each raw cell value (white = free, black = occupied),
+ * computed once per distinct value: a map holds a few thousand distinct
+ * values in millions of cells. */
+class CGreyLevels
 {
-	if (!grid.isObserved(cell)) return packRgb(kUnknownCellColour.R, kUnknownCellColour.G, kUnknownCellColour.B);
-	const auto grey = static_cast<uint8_t>(std::lround(255.0 * (1.0 - grid.occupancyProbability(cell))));
-	return packRgb(grey, grey, grey);
+   public:
+	uint8_t operator()(TLogOddsCell raw)
+	{
+		int16_t& grey = m_grey[static_cast<uint16_t>(raw)];
+		if (grey < 0)
+			grey = static_cast<int16_t>(std::lround(255.0 * (1.0 - logOddsToProbability(static_cast<float>(raw) / kLogOddsScale))));
+		return static_cast<uint8_t>(grey);
+	}
+
+   private:
+	std::vector<int16_t> m_grey = std::vector<int16_t>(1 << 16, -1);
+};
+
+/** Paints the k x k pixels of cell (gx, gy). Pixels in memory are B, G, R
+ * (what CImage::setPixel writes for 0xRRGGBB). */
+void paintCell(mrpt::img::CImage& image, const TImageFrame& frame, int gx, int gy, const uint8_t bgr[3])
+{
+	const int k = frame.pixels_per_cell;
+	const int col0 = (gx - frame.cells.gxMin) * k, row0 = (frame.cells.gyMax - gy) * k;
+	for (int dy = 0; dy < k; ++dy)
+	{
+		uint8_t* pixel = image.ptr<uint8_t>(static_cast<unsigned>(col0), static_cast<unsigned>(row0 + dy));
+		for (int dx = 0; dx < k; ++dx, pixel += 3) std::copy(bgr, bgr + 3, pixel);
+	}
+}
+
+void fillUnknown(mrpt::img::CImage& image, const TImageFrame& frame)
+{
+	const uint8_t bgr[3] = {kUnknownCellColour.B, kUnknownCellColour.G, kUnknownCellColour.R};
+	for (int row = 0; row < frame.heightPx(); ++row)
+	{
+		uint8_t* pixel = image.ptr<uint8_t>(0, static_cast<unsigned>(row));
+		for (int col = 0; col < frame.widthPx(); ++col, pixel += 3) std::copy(bgr, bgr + 3, pixel);
+	}
+}
+
+/** The cells of `bounds` shared with `frame` (empty if none). */
+TCellBounds overlap(const TCellBounds& bounds, const TCellBounds& frame)
+{
+	return {std::max(bounds.gxMin, frame.gxMin), std::min(bounds.gxMax, frame.gxMax), std::max(bounds.gyMin, frame.gyMin),
+			std::min(bounds.gyMax, frame.gyMax)};
 }
 }  // namespace
 
@@ -27,21 +68,25 @@ void TImageFrame::worldToPixel(double x_m, double y_m, double& col, double& row)
 mrpt::img::CImage renderGrid(const CTiledOccupancyGrid& grid, const TImageFrame& frame)
 {
 	mrpt::img::CImage image(frame.widthPx(), frame.heightPx(), mrpt::img::CH_RGB);
-	const int k = frame.pixels_per_cell;
-	for (int gy = frame.cells.gyMin; gy <= frame.cells.gyMax; ++gy)
-		for (int gx = frame.cells.gxMin; gx <= frame.cells.gxMax; ++gx)
-		{
-			// Pixels in memory are B, G, R (what CImage::setPixel writes for 0xRRGGBB).
-			const size_t colour = cellColour(grid, {gx, gy});
-			const uint8_t bgr[3] = {static_cast<uint8_t>(colour & 0xFF), static_cast<uint8_t>((colour >> 8) & 0xFF),
-									static_cast<uint8_t>((colour >> 16) & 0xFF)};
-			const int col0 = (gx - frame.cells.gxMin) * k, row0 = (frame.cells.gyMax - gy) * k;
-			for (int dy = 0; dy < k; ++dy)
+	fillUnknown(image, frame);
+	// Tile by tile rather than cell by cell through the tile lookup: the
+	// observed cells are painted over the unknown colour (same pixels).
+	CGreyLevels greyOf;
+	const auto& geometry = grid.geometry();
+	for (const TTileIndex& t : grid.tilesInCreationOrder())
+	{
+		const TCellBounds cells = overlap(geometry.tileBounds(t), frame.cells);
+		const CTile* tile = cells.empty() ? nullptr : grid.findTile(t);
+		if (!tile) continue;
+		for (int gy = cells.gyMin; gy <= cells.gyMax; ++gy)
+			for (int gx = cells.gxMin; gx <= cells.gxMax; ++gx)
 			{
-				uint8_t* pixel = image.ptr<uint8_t>(static_cast<unsigned>(col0), static_cast<unsigned>(row0 + dy));
-				for (int dx = 0; dx < k; ++dx, pixel += 3) std::copy(bgr, bgr + 3, pixel);
+				const TLogOddsCell raw = tile->raw(geometry.localCellOf({gx, gy}));
+				if (raw == kUnknownCell) continue;
+				const uint8_t grey = greyOf(raw), bgr[3] = {grey, grey, grey};
+				paintCell(image, frame, gx, gy, bgr);
 			}
-		}
+	}
 	return image;
 }
 

@@ -106,7 +106,10 @@ void CMappingPipeline::keepSensorMaps()
 	if (!m_sonar.sonarOnlyMap()) m_sonar.keepSonarOnlyMap(m_grid.options());
 }
 
-const maps::CTiledOccupancyGrid* CMappingPipeline::laserOnlyMap() const { return m_laserOnly.get(); }
+const maps::CTiledOccupancyGrid* CMappingPipeline::laserOnlyMap() const
+{
+	return m_sonar.sawSonar() ? m_laserOnly.get() : nullptr;
+}
 
 void CMappingPipeline::processEntry(const io::TRawlogEntry& entry)
 {

@@ -79,18 +79,21 @@ void writeMaps(const CMappingPipeline& pipeline, const TOutputOptions& options, 
 	mrpt::img::CImage image = renderMapWithPaths(pipeline, pipeline.grid(), frame, options);
 	savePng(image, dir + "/map.png");
 	written.push_back(dir + "/map.png");
-	if (const auto* loops = pipeline.loopClosureStage())
+	// Each overlay is drawn on its own copy of map.png's pixels (CImage copies
+	// share pixels, hence the deep copy); the last one drawn takes `image`.
+	const auto* loops = pipeline.loopClosureStage();
+	if (pipeline.sonarStage().reportsCorners())
 	{
-		mrpt::img::CImage closures = image.makeDeepCopy();  // CImage copies share pixels
-		drawLoopClosures(closures, frame, *loops);
-		savePng(closures, dir + "/map_loop_closures.png");
-		written.push_back(dir + "/map_loop_closures.png");
-	}
-	if (pipeline.sonarStage().tbfOptions().enabled)
-	{
-		drawCorners(image, frame, pipeline.sonarStage().corners());
-		savePng(image, dir + "/map_sonar_corners.png");
+		mrpt::img::CImage corners = loops ? image.makeDeepCopy() : image;
+		drawCorners(corners, frame, pipeline.sonarStage().corners());
+		savePng(corners, dir + "/map_sonar_corners.png");
 		written.push_back(dir + "/map_sonar_corners.png");
+	}
+	if (loops)
+	{
+		drawLoopClosures(image, frame, *loops);
+		savePng(image, dir + "/map_loop_closures.png");
+		written.push_back(dir + "/map_loop_closures.png");
 	}
 	// Same frame as map.png so the images overlay.
 	for (const auto& [grid, name] : {std::pair{pipeline.laserOnlyMap(), "map_laser_only.png"},
@@ -184,7 +187,7 @@ std::vector<std::string> writeMappingOutputs(const CMappingPipeline& pipeline, c
 	std::filesystem::create_directories(dir);
 	std::vector<std::string> written;
 	writeMaps(pipeline, options, dir, written);
-	if (pipeline.sonarStage().tbfOptions().enabled)
+	if (pipeline.sonarStage().reportsCorners())
 	{
 		writeSonarCornersCsv(pipeline.sonarStage().corners(), dir + "/sonar_corners.csv");
 		written.push_back(dir + "/sonar_corners.csv");

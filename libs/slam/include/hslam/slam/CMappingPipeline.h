@@ -111,11 +111,15 @@ class CMappingPipeline
 	/** Also keep a sonar-only grid and, if sonar readings go into the main
 	 * grid, a laser-only grid (map_sonar_only.png, map_laser_only.png). */
 	void keepSensorMaps();
-	/** Grid of the laser scans alone; null unless kept and sonar mapping is on
-	 * (otherwise grid() is the laser-only map). */
+	/** Grid of the laser scans alone; null unless kept, sonar mapping is on
+	 * and the log had sonar (otherwise grid() is the laser-only map). */
 	const maps::CTiledOccupancyGrid* laserOnlyMap() const;
-	/** Grid of the sonar readings alone (weight 1); null unless kept. */
-	const maps::CTiledOccupancyGrid* sonarOnlyMap() const { return m_sonar.sonarOnlyMap(); }
+	/** Grid of the sonar readings alone (weight 1); null unless kept and the
+	 * log had sonar (a log without would give an empty picture). */
+	const maps::CTiledOccupancyGrid* sonarOnlyMap() const
+	{
+		return m_sonar.sawSonar() ? m_sonar.sonarOnlyMap() : nullptr;
+	}
 	const CSonarMappingStage& sonarStage() const { return m_sonar; }
 	const CVisionStage& visionStage() const { return m_vision; }
 	/** Estimated robot pose at each scan, online (the front-end's filtered estimate). */

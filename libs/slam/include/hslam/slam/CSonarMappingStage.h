@@ -84,6 +84,11 @@ class CSonarMappingStage
 	/** The sonar-only grid, or null if not kept. */
 	const maps::CTiledOccupancyGrid* sonarOnlyMap() const { return m_sonarOnly.get(); }
 
+	/** Whether any sonar ring was processed (a laser-only log has none). */
+	bool sawSonar() const { return m_counters.observations > 0; }
+	/** Whether the run reports TBF corners: TBF on and the log had sonar
+	 * (sonar_corners.csv, map_sonar_corners.png, the report's section). */
+	bool reportsCorners() const { return m_tbf.enabled && sawSonar(); }
 	/** TBF corners with support >= [tbf] min_support (empty if TBF is off). */
 	std::vector<sonar::TTbfCorner> corners() const;
 

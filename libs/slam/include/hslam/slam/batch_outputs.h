@@ -14,7 +14,9 @@
  *   dynamic/scan_N.png  per-scan debug images of the filter (dynamic_debug_images)
  *   sonar_corners.csv   TBF sonar corners (x, y, support, covariance) ([tbf] enabled)
  *   map_sonar_corners.png  map.png with the TBF corners (green crosses, 2-sigma circles)
- *   map_laser_only.png, map_sonar_only.png  the grid of each sensor alone (write_sensor_maps) */
+ *   map_laser_only.png, map_sonar_only.png  the grid of each sensor alone (write_sensor_maps)
+ * The last four only when the log holds sonar readings: for a laser-only log
+ * they would be an empty picture and copies of map.png. */
 #pragma once
 
 #include <hslam/slam/CMappingPipeline.h>
