@@ -226,7 +226,7 @@ size_t countAfter(const std::string& file, const std::string& prefix)
 	return std::strtoul(line.c_str() + std::min(line.size(), prefix.size()), nullptr, 10);
 }
 
-TBackendRow measureBackend(const std::string& process, const std::string& config, const std::string& rawlog,
+TBackendRow measureBackend(const std::string& process, const TProcessConfig& config, const std::string& rawlog,
 						   const std::string& truth, const std::string& outDir)
 {
 	TBackendRow row;
@@ -236,8 +236,9 @@ TBackendRow measureBackend(const std::string& process, const std::string& config
 	const auto run = [&](const std::string& tag, bool on) {
 		const std::string out = dir + "/" + tag;
 		fs::remove_all(out);
-		const std::string cmd = shellQuote(process) + " -c " + shellQuote(config) + " -i " + shellQuote(rawlog) +
-								" -o " + shellQuote(out) + " --set output.write_tiles=false --set loop_closure.enabled=" +
+		// the bench's own settings after the user's overrides: the last one wins
+		const std::string cmd = shellQuote(process) + config.arguments() + " -i " + shellQuote(rawlog) + " -o " +
+								shellQuote(out) + " --set output.write_tiles=false --set loop_closure.enabled=" +
 								(on ? "true" : "false");
 		std::cerr << "\rgraph: " << row.name << " back-end " << tag << "   " << std::flush;
 		const TChildTimes times = runTimedChild(cmd, dir + "/" + tag + ".log");
@@ -319,8 +320,16 @@ int runGraphSuite(int argc, char** argv)
 										"config_ini/hslam-default.ini", "file.ini", cmd);
 	TCLAP::ValueArg<std::string> out("", "out", "folder for the runs (default ./hslam-bench-graph)", false,
 									 "hslam-bench-graph", "dir", cmd);
+	TCLAP::MultiArg<std::string> set("", "set", "SECTION.KEY=VALUE: override for every hslam-process run (repeatable)",
+									 false, "SECTION.KEY=VALUE", cmd);
 	TCLAP::ValueArg<int> maxKeyframes("", "max-keyframes", "largest synthetic graph (default 10000)", false, 10000, "N", cmd);
 	if (!cmd.parse(argc, argv)) return hslam::common::exitCodeAfterParseStop(argc, argv);
+	if (rawlogs.getValue().empty() && !set.getValue().empty())
+		throw std::runtime_error("--set applies to the hslam-process runs: give them with -r RAWLOG");
+	// checked before the synthetic graphs, so a typo fails at once
+	const TProcessConfig processConfig = rawlogs.getValue().empty()
+											 ? TProcessConfig{}
+											 : TProcessConfig::checked(config.getValue(), set.getValue());
 	const TLapRoute route;
 	std::vector<TGraphSizeRow> ours, mrpt;
 	for (int n : {500, 1000, 2000, 5000, 10000})
@@ -338,7 +347,7 @@ int runGraphSuite(int argc, char** argv)
 	{
 		std::string truth = k < truths.getValue().size() ? truths.getValue()[k] : "";
 		if (truth == "-") truth.clear();
-		backend.push_back(measureBackend(process, fs::absolute(config.getValue()).string(), rawlogs.getValue()[k], truth,
+		backend.push_back(measureBackend(process, processConfig, rawlogs.getValue()[k], truth,
 										 fs::absolute(out.getValue()).string()));
 	}
 	printBackendRows(backend);

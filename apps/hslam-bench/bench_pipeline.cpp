@@ -170,15 +170,16 @@ common::TTrajectory2D icpSlamTrajectory(const std::string& pathFile, const TBenc
 /** Paths of one benchmark run. */
 struct TBenchSetup
 {
-	std::string hslam_process, config, out_dir;
+	std::string hslam_process, out_dir;
+	TProcessConfig config;
 	int repetitions = 3;
 };
 
 std::string processCommand(const TBenchSetup& setup, const std::string& rawlog, const std::string& outDir,
 						   const std::string& extra = "")
 {
-	return shellQuote(setup.hslam_process) + " -q -c " + shellQuote(setup.config) + " -i " + shellQuote(rawlog) +
-		   " -o " + shellQuote(outDir) + extra;
+	return shellQuote(setup.hslam_process) + " -q" + setup.config.arguments() + " -i " + shellQuote(rawlog) + " -o " +
+		   shellQuote(outDir) + extra;
 }
 
 std::optional<double> ateOf(const std::string& groundTruth, const std::string& trajectory)
@@ -334,21 +335,23 @@ int runPipelineSuite(int argc, char** argv)
 	TCLAP::ValueArg<int> repetitions("n", "repetitions", "timed runs per program, best kept (default 3)", false, 3, "N", cmd);
 	TCLAP::ValueArg<std::string> config("c", "config", "hslam-process INI (default config_ini/hslam-default.ini)", false,
 										"config_ini/hslam-default.ini", "file.ini", cmd);
+	TCLAP::MultiArg<std::string> set("", "set", "SECTION.KEY=VALUE: override for every hslam-process run (repeatable)",
+									 false, "SECTION.KEY=VALUE", cmd);
 	TCLAP::ValueArg<std::string> out("", "out", "folder for the runs (default ./hslam-bench-pipeline)", false,
 									 "hslam-bench-pipeline", "dir", cmd);
 	if (!cmd.parse(argc, argv)) return hslam::common::exitCodeAfterParseStop(argc, argv);
 	TBenchSetup setup;
 	setup.hslam_process = (fs::canonical("/proc/self/exe").parent_path() / "hslam-process").string();
-	setup.config = fs::absolute(config.getValue()).string();
 	setup.out_dir = fs::absolute(out.getValue()).string();
 	setup.repetitions = std::max(1, repetitions.getValue());
-	for (const auto& f : {setup.hslam_process, setup.config})
-		if (!fs::exists(f)) throw std::runtime_error(f + " not found");
+	if (!fs::exists(setup.hslam_process)) throw std::runtime_error(setup.hslam_process + " not found");
+	setup.config = TProcessConfig::checked(config.getValue(), set.getValue());
 	if (std::system("command -v icp-slam >/dev/null 2>&1") != 0)
 		throw std::runtime_error("icp-slam not in PATH (Debian package mrpt-apps)");
 	const auto logs = describeRawlogs(rawlogs.getValue().empty() ? defaultRawlogs() : rawlogs.getValue(), truths.getValue());
 	std::cout << "Suite pipeline: " << logs.size() << " rawlog(s), " << setup.repetitions
 			  << " paired run(s) each; runs in " << setup.out_dir << "\n";
+	for (const auto& o : setup.config.overrides) std::cout << "  --set " << o << "\n";
 	std::vector<TBenchRow> rows;
 	int failed = 0;
 	for (const auto& log : logs)

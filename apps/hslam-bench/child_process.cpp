@@ -1,6 +1,10 @@
 #include "child_process.h"
 
+#include <hslam/slam/CMappingPipeline.h>
+#include <hslam/slam/mapping_config.h>
 #include <sys/resource.h>
+
+#include <filesystem>
 
 #include <chrono>
 #include <cstdlib>
@@ -13,6 +17,23 @@ std::string shellQuote(const std::string& s)
 	std::string q = "'";
 	for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
 	return q + "'";
+}
+
+TProcessConfig TProcessConfig::checked(const std::string& ini, const std::vector<std::string>& overrides)
+{
+	TProcessConfig c{std::filesystem::absolute(ini).string(), overrides};
+	if (!std::filesystem::exists(c.ini)) throw std::runtime_error(c.ini + " not found");
+	// what hslam-process reads first: the file (naming its line), the
+	// sections, then every stage's keys and ranges as the pipeline loads them
+	const slam::CMappingPipeline pipeline(slam::TMappingConfig::fromConfig(c.ini, overrides).ini);
+	return c;
+}
+
+std::string TProcessConfig::arguments() const
+{
+	std::string a = " -c " + shellQuote(ini);
+	for (const auto& o : overrides) a += " --set " + shellQuote(o);
+	return a;
 }
 
 double childCpuSeconds(const std::string& command, const std::string& logFile)

@@ -132,3 +132,52 @@ TEST(ConfigApps, OtherAppsReadIniFilesThroughTheSameReader)
 	EXPECT_FALSE(std::filesystem::exists(dir.file("sim")));
 	EXPECT_FALSE(std::filesystem::exists(dir.file("m.yml")));
 }
+
+TEST(ConfigApps, BenchChecksItsOverridesBeforeAnyRun)
+{
+	// hslam-bench pipeline / graph --set: a bad override fails at once with
+	// hslam-process's own message, before any run (the suites take minutes).
+	hslam::testing::CTempDir dir;
+	const std::string lab = kSource + "/rawlog_samples/lab/sim.rawlog";
+	const std::vector<std::pair<std::string, std::string>> cases{
+		{"--set icp.nonsense=1", "[icp] unknown key(s): nonsense"},
+		{"--set icp.restart_below_fit=2", "[icp] restart_below_fit = '2': out of range [0, 1]"},
+		{"--set icp.restart_below_fit", "--set 'icp.restart_below_fit': expected SECTION.KEY=VALUE"},
+	};
+	for (const auto& [set, message] : cases)
+		for (const std::string suite : {"pipeline", "graph --max-keyframes 500"})
+		{
+			const std::string out = dir.file("out");
+			EXPECT_EQ(run(kBin + "/hslam-bench " + suite + " -r '" + lab + "' " + set + " --out '" + out + "'",
+						  dir.file("err.txt")),
+					  1)
+				<< suite << " " << set;
+			const std::string err = readText(dir.file("err.txt"));
+			EXPECT_NE(err.find(message), std::string::npos) << suite << " " << set << ": " << err;
+			EXPECT_FALSE(std::filesystem::exists(out + "/lab")) << suite << " " << set;  // nothing was run
+		}
+}
+
+TEST(ConfigApps, BenchPassesItsOverridesToEveryRun)
+{
+	// The overrides reach the timed runs (the full run and the one-scan
+	// prefix that start-up is measured on).
+	hslam::testing::CTempDir dir;
+	const std::string lab = dir.file("lab.rawlog");  // the lab sample's first 300 entries (a few seconds)
+	ASSERT_EQ(run("rawlog-edit --cut --from-index 0 --to-index 300 -q -i '" + kSource +
+					  "/rawlog_samples/lab/sim.rawlog' -o '" + lab + "'",
+				  dir.file("err.txt")),
+			  0);
+	ASSERT_EQ(run(kBin + "/hslam-bench pipeline -r '" + lab + "' -g - -n 1 --set pose_estimation.method=odometry --set " +
+					  "loop_closure.enabled=false --out '" + dir.file("out") + "'",
+				  dir.file("err.txt")),
+			  0)
+		<< readText(dir.file("err.txt"));
+	for (const char* run : {"hslam", "hslam-prefix"})
+	{
+		const std::string used = readText(dir.file("out") + "/lab/" + run + "/config_used.ini");
+		EXPECT_NE(used.find("method = odometry"), std::string::npos) << run;
+	}
+	EXPECT_NE(readText(dir.file("out") + "/lab/hslam/config_used.ini").find("[loop_closure]\nenabled = false"),
+			  std::string::npos);
+}
