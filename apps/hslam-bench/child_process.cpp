@@ -4,10 +4,9 @@
 #include <hslam/slam/mapping_config.h>
 #include <sys/resource.h>
 
-#include <filesystem>
-
 #include <chrono>
 #include <cstdlib>
+#include <filesystem>
 #include <stdexcept>
 
 namespace hslam::bench

@@ -8,7 +8,6 @@ namespace hslam::maps
 {
 namespace
 {
-
 /** Grey level of each raw cell value (white = free, black = occupied),
  * computed once per distinct value: a map holds a few thousand distinct
  * values in millions of cells. */
@@ -18,8 +17,11 @@ class CGreyLevels
 	uint8_t operator()(TLogOddsCell raw)
 	{
 		int16_t& grey = m_grey[static_cast<uint16_t>(raw)];
-		if (grey < 0)
-			grey = static_cast<int16_t>(std::lround(255.0 * (1.0 - logOddsToProbability(static_cast<float>(raw) / kLogOddsScale))));
+		if (grey < 0)  // as CTiledOccupancyGrid::occupancyProbability() computes it
+		{
+			const float logOdds = static_cast<float>(raw) / kLogOddsScale;
+			grey = static_cast<int16_t>(std::lround(255.0 * (1.0 - logOddsToProbability(logOdds))));
+		}
 		return static_cast<uint8_t>(grey);
 	}
 
