@@ -45,6 +45,20 @@ TEST(OptionsIo, AbsentKeysKeepDefaults)
 	EXPECT_EQ(o.method, "odometry");
 }
 
+TEST(OptionsIo, AnAbsentAngleKeepsItsRadiansBitForBit)
+{
+	// Degrees and back move a third of these by an ulp (300 deg/s became
+	// 300.00000000000006 in config_used.ini); a key left out must not.
+	for (int i = 1; i < 115; ++i)
+	{
+		mrpt::config::CConfigFileMemory cfg("[s]\nrange_m = 1\n");
+		TExampleOptions o;
+		o.cone_rad = i * 0.0137;  // 0.8 .. 89.5 deg
+		hslam::common::loadOptions(o, cfg, "s");
+		EXPECT_EQ(o.cone_rad, i * 0.0137) << i;
+	}
+}
+
 TEST(OptionsIo, ReadsValuesWithInlineComments)
 {
 	const auto o = loadFrom("[s]\nrange_m = 4.5 ; metres\ncells = 50 # cells\nenabled = yes\nmethod = lines // c\ncone_deg = 30\n");

@@ -126,3 +126,33 @@ TEST(ConfigRoundTrip, UnreadSectionsAreCheckedToo)
 				 common::config_error);
 	EXPECT_NO_THROW(slam::TMappingConfig::fromConfig("", {"line_extraction_iep.min_points=5"}));
 }
+
+TEST(ConfigRoundTrip, AKeyLeftOutTakesTheShippedDefault)
+{
+	// An INI that leaves keys out (here: no INI at all) runs with
+	// config_ini/hslam-default.ini's values, not with other defaults in code:
+	// the two runs record the same configuration and the same trajectory.
+	hslam::testing::CTempDir dir;
+	ASSERT_TRUE(runWith(slam::testing::kDefaultIni, {"output.write_tiles=false"}, dir.file("a")).input_error.empty());
+	ASSERT_TRUE(runWith("", {"output.write_tiles=false"}, dir.file("b")).input_error.empty());
+	const auto shipped = common::loadIniFile(dir.file("a/config_used.ini"));
+	const auto bare = common::loadIniFile(dir.file("b/config_used.ini"));
+	std::vector<std::string> sections;
+	shipped.getAllSections(sections);
+	size_t compared = 0;
+	for (const auto& section : sections)
+	{
+		std::vector<std::string> keys;
+		shipped.getAllKeys(section, keys);
+		for (const auto& key : keys)
+		{
+			const std::string a = common::stripInlineComment(shipped.read_string(section, key, "", false));
+			const std::string b = common::stripInlineComment(bare.read_string(section, key, "<missing>", false));
+			EXPECT_TRUE(sameValue(a, b)) << "[" << section << "] " << key << ": shipped '" << a << "', left out '" << b
+										 << "'";
+			++compared;
+		}
+	}
+	EXPECT_GT(compared, 300u);
+	EXPECT_EQ(fileBytes(dir.file("a/trajectory.tum")), fileBytes(dir.file("b/trajectory.tum")));
+}

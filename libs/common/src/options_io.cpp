@@ -117,9 +117,12 @@ void CSectionReader::choice(const std::string& key, std::string& value, const st
 
 void CSectionReader::degrees(const std::string& key, double& radians, double minDeg, double maxDeg)
 {
-	double deg = radians * 180.0 / M_PI;
+	const double shown = radians * 180.0 / M_PI;
+	double deg = shown;
 	real(key, deg, minDeg, maxDeg);
-	radians = deg * M_PI / 180.0;
+	// a key left out keeps the stored radians bit for bit (degrees and back
+	// can move them by an ulp: 300 deg/s became 300.00000000000006)
+	if (deg != shown) radians = deg * M_PI / 180.0;
 }
 
 void CSectionReader::text(const std::string& key, std::string& value)

@@ -9,6 +9,17 @@ namespace hslam::slam
 {
 namespace
 {
+/** [laser_model]: the grid inserter's keys with the pipeline's default range,
+ * 8 m (chosen by map quality, config_ini/hslam-default.ini; the library keeps
+ * the thesis's 3 m), so a key left out means the shipped default. */
+maps::CLaserGridInserter::TOptions laserModelOptions(const mrpt::config::CConfigFileBase& cfg)
+{
+	maps::CLaserGridInserter::TOptions options;
+	options.max_range_m = 8.0;
+	common::loadOptions(options, cfg, "laser_model");
+	return options;
+}
+
 common::TTimedPose2D timedPose(const mrpt::obs::CObservation& obs, const mrpt::poses::CPose2D& pose)
 {
 	return {mrpt::Clock::toDouble(obs.timestamp), {pose.x(), pose.y(), pose.phi()}};
@@ -51,7 +62,7 @@ CMappingPipeline::CMappingPipeline(const mrpt::config::CConfigFileBase& cfg)
 	: m_processOptions(common::loadedOptions<TProcessOptions>(cfg, "process")),
 	  m_poseOptions(common::loadedOptions<TPoseEstimationOptions>(cfg, "pose_estimation")),
 	  m_grid(common::loadedOptions<maps::CTiledOccupancyGrid::TOptions>(cfg, "grid")),
-	  m_laserInserter(common::loadedOptions<maps::CLaserGridInserter::TOptions>(cfg, "laser_model")),
+	  m_laserInserter(laserModelOptions(cfg)),
 	  m_sonar(common::loadedOptions<TSonarMappingOptions>(cfg, "sonar_model"), common::loadedOptions<TTbfStageOptions>(cfg, "tbf")),
 	  m_vision(cfg),
 	  m_dynamicOptions(common::loadedOptions<dynamic::CDynamicObjectFilter::TOptions>(cfg, "dynamic_objects")),

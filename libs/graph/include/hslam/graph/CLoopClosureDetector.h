@@ -58,7 +58,15 @@ namespace hslam::graph
 {
 struct TLoopClosureOptions
 {
-	TCorrelativeMatcherOptions matcher;  //!< field and query keys (resolution_m, kernel_sigma_m, levels, ...)
+	/** Field and query keys (resolution_m, kernel_sigma_m, levels, ...); the
+	 * query reaches 10 m by default (the matcher's own default keeps all). */
+	TCorrelativeMatcherOptions matcher = closureMatcher();
+	static TCorrelativeMatcherOptions closureMatcher()
+	{
+		TCorrelativeMatcherOptions m;
+		m.max_query_range_m = 10.0;
+		return m;
+	}
 	int submap_keyframes = 10;  //!< consecutive keyframes per submap
 	int min_separation_keyframes = 30;  //!< submaps with a keyframe this recent are not candidates
 	int detect_every_n_keyframes = 1;  //!< search at every n-th keyframe

@@ -40,8 +40,10 @@ class CIcpMatcher
 		/** "mrpt": mrpt::slam::CICP on a CSimplePointsMap reference; "cached":
 		 * CPointToPointIcp (the same classic algorithm, exact nearest
 		 * neighbours cached between iterations; with stage_step_fraction > 0
-		 * its coarse stages end early) on a CPointIndex2D. */
-		std::string engine = "mrpt";
+		 * its coarse stages end early) on a CPointIndex2D. The defaults here
+		 * are config_ini/hslam-default.ini's (a key left out of an INI means
+		 * the shipped default; test ConfigRoundTrip.AKeyLeftOutTakesTheShippedDefault). */
+		std::string engine = "cached";
 		int cached_neighbours = 4;  //!< candidates kept per scan point (engine = cached)
 		double stage_step_fraction = 0.01;  //!< engine = cached: coarse stages end early (0 = MRPT's rule)
 		/** The scan's points seen at grazing incidence are not aligned (the
@@ -103,9 +105,20 @@ class CIcpMatcher
 		 * one's covariance (competing_basins.h). */
 		TCompetingBasinOptions competing;
 		std::string covariance = "geometric";  //!< "geometric" (icp_covariance.h) or "mrpt" (CICP's own)
-		TGeometricCovarianceOptions geometric;
+		TGeometricCovarianceOptions geometric = frontEndGeometric();
 		double min_xy_std_m = 0.02;  //!< covariance floor (laser noise, map blur)
 		double min_theta_std_rad = 0.5 * M_PI / 180.0;
+
+		/** The front-end's geometric covariance: information per length of
+		 * wall, and directions constrained by fewer than 15 % of the points
+		 * left to the prediction (the library's own defaults keep both off). */
+		static TGeometricCovarianceOptions frontEndGeometric()
+		{
+			TGeometricCovarianceOptions g;
+			g.full_weight_spacing_m = 0.05;
+			g.degenerate_min_fraction = 0.15;
+			return g;
+		}
 
 		template <class V>
 		void visit(V& v)
