@@ -41,7 +41,7 @@ broken=$(check_page report_broken.html)
 echo "control with one bad reference: $broken"
 rm -f "$run/report_check.html" "$run/report_broken.html"
 [[ "$broken" == *"broken=1 missing.png"* ]] || fail "the broken-image control was not caught"
-[[ "$result" =~ images=([0-9]+)\ broken=0 ]] && [ "${BASH_REMATCH[1]}" -ge 4 ] || fail "broken or missing images: $result"
+[[ "$result" =~ images=([0-9]+)\ broken=0 ]] && [ "${BASH_REMATCH[1]}" -ge 5 ] || fail "broken or missing images: $result"
 
 # The figures shown are those of summary.json.
 cp "$profile/report_check.html.dom" "$profile/dom.html"
@@ -71,9 +71,15 @@ for k in keys:
     ok = abs(float(shown) - want) <= 1e-3 * max(1, abs(want)) if isinstance(want, (int, float)) else shown.strip() == want
     assert ok, f"{k}: page shows {shown!r}, summary.json has {want!r}"
     print(f"  {k:14s} page {shown.strip():>12s}  summary.json {want}")
+loop = summary["loop_closure"]
+assert loop is not None, "the default runs the loop-closure back-end: summary.json has no loop_closure"
+for k in ("keyframes", "closures_tested", "closures_accepted", "closures_rejected", "optimizations"):
+    shown = p.figs.get(k)
+    assert shown is not None and int(shown) == loop[k], f"{k}: page shows {shown!r}, summary.json has {loop[k]!r}"
+    print(f"  {k:18s} page {shown.strip():>8s}  summary.json loop_closure.{k} {loop[k]}")
 warnings = re.findall(r'<li class="warn">', dom)
 assert len(warnings) == len(summary["warnings"]), (len(warnings), summary["warnings"])
-for section in ("Timing per stage", "Effective configuration", "Leg and person tracks", "TBF sonar corners",
+for section in ("Loop closure", "Timing per stage", "Effective configuration", "Leg and person tracks", "TBF sonar corners",
                 "Evaluation against the reference" if summary["evaluated"] else "Timing"):
     assert section in dom, f"section '{section}' missing"
 print(f"  warnings       {len(warnings)} on the page and in summary.json")

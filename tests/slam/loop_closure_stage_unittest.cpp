@@ -32,7 +32,9 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <memory>
+#include <sstream>
 
 using namespace hslam;
 
@@ -364,4 +366,51 @@ TEST(LoopClosureStage, BatchWritesItsFilesAndMrptReadsTheGraph)
 	EXPECT_NE(text.find("loop_closure"), std::string::npos);
 	EXPECT_NE(common::readTumFile(out + "/trajectory.tum").back().pose.x,
 			  common::readTumFile(out + "/trajectory_online.tum").back().pose.x);
+}
+
+TEST(LoopClosureStage, SummaryAndReportShowTheBackEnd)
+{
+	// summary.json's loop_closure object and report.html's section carry
+	// the back-end's counts (those of loop_closures.csv), the ATE before and
+	// after the graph, and the closures picture; without the back-end, null
+	// and no section.
+	hslam::testing::CTempDir dir;
+	const auto run = [&](const std::string& out, bool enabled) {
+		batch::TBatchRequest request;
+		request.config_file = slam::testing::kDefaultIni;
+		request.overrides = {"process.laser_label=LASER", "output.write_tiles=false",
+							 std::string("loop_closure.enabled=") + (enabled ? "true" : "false")};
+		request.input_rawlog = sample("lab") + "/sim.rawlog";
+		request.ground_truth_tum = sample("lab") + "/ground_truth.tum";
+		request.output_dir = out;
+		request.show_progress = false;
+		std::ostringstream o, e;
+		return batch::CBatchProcessor(request, o, e).run();
+	};
+	const auto text = [](const std::string& path) {
+		std::ifstream in(path);
+		return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+	};
+	run(dir.file("on"), true);
+	size_t tested = 0, accepted = 0;
+	std::istringstream csv(text(dir.file("on/loop_closures.csv")));
+	std::string line;
+	for (std::getline(csv, line); std::getline(csv, line); ++tested) accepted += line.find(",1,accepted,") != std::string::npos;
+	ASSERT_GT(accepted, 2u);
+	const std::string summary = text(dir.file("on/summary.json")), report = text(dir.file("on/report.html"));
+	EXPECT_NE(summary.find("\"closures_tested\": " + std::to_string(tested) + ","), std::string::npos) << summary;
+	EXPECT_NE(summary.find("\"closures_accepted\": " + std::to_string(accepted) + ","), std::string::npos);
+	EXPECT_NE(report.find("id=\"fig-closures_accepted\">" + std::to_string(accepted) + "<"), std::string::npos);
+	EXPECT_NE(report.find("<img src=\"map_loop_closures.png\""), std::string::npos);
+	// the online ATE is trajectory_online.tum's
+	const double online = eval::evaluateTumFiles(sample("lab") + "/ground_truth.tum", dir.file("on/trajectory_online.tum"))
+							  .ate.position_m.rmse;
+	const size_t at = summary.find("\"ate_online_rmse_m\": ");
+	ASSERT_NE(at, std::string::npos);
+	EXPECT_NEAR(std::stod(summary.substr(at + 21)), online, 1e-6);  // the TUM file rounds the poses
+	EXPECT_NE(report.find("id=\"fig-ate_online_rmse_m\">"), std::string::npos);
+
+	run(dir.file("off"), false);
+	EXPECT_NE(text(dir.file("off/summary.json")).find("\"loop_closure\": null"), std::string::npos);
+	EXPECT_EQ(text(dir.file("off/report.html")).find("id=\"loop-closure\""), std::string::npos);
 }

@@ -268,6 +268,7 @@ void CBatchProcessor::evaluate(const slam::CMappingPipeline& pipeline, TBatchRes
 		m_out << "\nOnline (before the pose graph):\n";
 		eval::printEvaluation(m_out, online);
 		eval::writeEvaluationJson(m_request.output_dir + "/evaluation_online.json", online);
+		result.evaluation_online = online;
 	}
 	result.evaluated = true;
 	result.evaluation = errors;

@@ -119,6 +119,33 @@ void writeEvaluation(std::ostream& h, const TRunSummary& s)
 	h << "</table>\n<p>Also in <a href=\"evaluation.json\">evaluation.json</a>.</p>\n";
 }
 
+/** The back-end's figures, the ATE before and after it, and the closures
+ * drawn on the map. */
+void writeLoopClosure(std::ostream& h, const TRunSummary& s, const std::string& dir)
+{
+	if (!s.loop_closure) return;
+	const auto& l = *s.loop_closure;
+	h << "<h2 id=\"loop-closure\">Loop closure</h2>\n<table>\n"
+	  << figureRow("keyframes (graph nodes)", "keyframes", std::to_string(l.keyframes))
+	  << figureRow("closures tested", "closures_tested", std::to_string(l.closures_tested))
+	  << figureRow("closures accepted", "closures_accepted", std::to_string(l.closures_accepted))
+	  << figureRow("closures rejected", "closures_rejected", std::to_string(l.closures_rejected))
+	  << figureRow("optimisations", "optimizations", std::to_string(l.optimizations))
+	  << figureRow("back-end time (ms)", "backend_ms", number(l.backend_ms, "%.1f"))
+	  << figureRow("map re-rendered from the optimised graph", "map_rerendered", l.map_rerendered ? "yes" : "no");
+	if (l.ate_online_rmse_m && s.evaluation && !s.evaluation->ate.position_m.empty())
+		h << figureRow("ATE RMSE before the pose graph (m)", "ate_online_rmse_m", number(*l.ate_online_rmse_m, "%.4f"))
+		  << figureRow("ATE RMSE after (m)", "ate_optimised_rmse_m", number(s.evaluation->ate.position_m.rmse, "%.4f"));
+	h << "</table>\n<p>Every tested closure with its scores: <a href=\"loop_closures.csv\">loop_closures.csv</a>; "
+	  << "the graph in MRPT's format: <a href=\"graph.graph\">graph.graph</a>; the online trajectory: "
+	  << "<a href=\"trajectory_online.tum\">trajectory_online.tum</a>.</p>\n";
+	const std::string closures = "map_loop_closures.png";
+	if (std::filesystem::exists(std::filesystem::path(dir) / closures))
+		h << "<figure><a href=\"" << closures << "\"><img src=\"" << closures
+		  << "\" alt=\"loop closures\"></a><figcaption>closures between keyframes: accepted green, rejected blue, "
+		  << "dropped by the optimiser orange (" << closures << ")</figcaption></figure>\n";
+}
+
 /** One line per track: kind, id, first/last time, scans seen, last position. */
 void writeTracks(std::ostream& h, const slam::CMappingPipeline& pipeline)
 {
@@ -210,7 +237,8 @@ void writeHtmlReport(const TRunSummary& summary, const slam::CMappingPipeline& p
 	  << htmlEscape(summary.output_dir) << "<br>hslam " << common::versionText()
 	  << ". Figures also in <a href=\"summary.json\">summary.json</a>.</p>\n"
 	  << "<nav><a href=\"#summary\">summary</a><a href=\"#warnings\">warnings</a><a href=\"#map\">map</a>"
-	  << "<a href=\"#poses\">poses</a><a href=\"#timing\">timing</a><a href=\"#evaluation\">evaluation</a>"
+	  << "<a href=\"#poses\">poses</a><a href=\"#loop-closure\">loop closure</a><a href=\"#timing\">timing</a>"
+	  << "<a href=\"#evaluation\">evaluation</a>"
 	  << "<a href=\"#tracks\">tracks</a><a href=\"#corners\">sonar corners</a><a href=\"#config\">configuration</a>"
 	  << "</nav>\n";
 	writeSummaryTable(h, summary);
@@ -221,6 +249,7 @@ void writeHtmlReport(const TRunSummary& summary, const slam::CMappingPipeline& p
 				  {"map_laser_only.png", "laser only"},
 				  {"map_sonar_only.png", "sonar only"}});
 	writeFigures(h, dir, "Pose estimates", "poses", {{"pose_plot.png", "x, y, theta with +-1 sigma and odometry"}});
+	writeLoopClosure(h, summary, dir);
 	writeTiming(h, pipeline.timer());
 	writeEvaluation(h, summary);
 	writeTracks(h, pipeline);

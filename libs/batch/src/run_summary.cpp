@@ -39,6 +39,36 @@ void countTracks(const slam::CMappingPipeline& pipeline, TRunSummary& s)
 	s.person_tracks = persons.size();
 }
 
+std::optional<TLoopClosureSummary> summarizeLoopClosure(const slam::CMappingPipeline& pipeline, const TBatchResult& result)
+{
+	const auto* stage = pipeline.loopClosureStage();
+	if (!stage) return std::nullopt;
+	const auto& t = stage->backend().timing();
+	TLoopClosureSummary s;
+	s.keyframes = t.keyframes;
+	s.closures_tested = t.candidates_tested;
+	s.closures_accepted = t.closures_accepted;
+	for (const auto& c : stage->backend().closures()) s.closures_rejected += c.accepted ? 0 : 1;
+	s.optimizations = t.optimizations;
+	s.backend_ms = t.total_ms;
+	s.map_rerendered = pipeline.mapRerendered();
+	if (result.evaluation_online && !result.evaluation_online->ate.position_m.empty())
+		s.ate_online_rmse_m = result.evaluation_online->ate.position_m.rmse;
+	return s;
+}
+
+std::string loopClosureJson(const std::optional<TLoopClosureSummary>& l)
+{
+	if (!l) return "null";
+	return "{\"keyframes\": " + std::to_string(l->keyframes) + ", \"closures_tested\": " +
+		   std::to_string(l->closures_tested) + ", \"closures_accepted\": " + std::to_string(l->closures_accepted) +
+		   ", \"closures_rejected\": " + std::to_string(l->closures_rejected) +
+		   ", \"optimizations\": " + std::to_string(l->optimizations) +
+		   ", \"backend_ms\": " + jsonNumber(l->backend_ms, "%.1f") +
+		   ", \"map_rerendered\": " + (l->map_rerendered ? "true" : "false") + ", \"ate_online_rmse_m\": " +
+		   (l->ate_online_rmse_m ? jsonNumber(*l->ate_online_rmse_m) : "null") + "}";
+}
+
 void addWarnings(TRunSummary& s)
 {
 	auto& w = s.warnings;
@@ -92,6 +122,7 @@ TRunSummary summarizeRun(const slam::CMappingPipeline& pipeline, const TBatchReq
 	s.ms_per_scan = s.scans > 0 ? wall_s * 1000.0 / static_cast<double>(s.scans) : 0.0;
 	s.input_error = result.input_error;
 	s.evaluation = result.evaluation;
+	s.loop_closure = summarizeLoopClosure(pipeline, result);
 	addWarnings(s);
 	return s;
 }
@@ -136,7 +167,8 @@ std::string runSummaryToJson(const TRunSummary& s)
 		{"ate_max_m", ate(&eval::TErrorStats::max)},
 		{"matched_poses", evaluated ? std::to_string(s.evaluation->matched) : "null"},
 		{"warnings", common::jsonStringArray(s.warnings)},
-		{"evaluation", evaluated ? eval::evaluationToJson(*s.evaluation) : "null"}};
+		{"evaluation", evaluated ? eval::evaluationToJson(*s.evaluation) : "null"},
+		{"loop_closure", loopClosureJson(s.loop_closure)}};
 	std::string out = "{\n";
 	for (size_t i = 0; i < fields.size(); ++i)
 		out += "  " + jsonString(fields[i].first) + ": " + fields[i].second + (i + 1 < fields.size() ? ",\n" : "\n");

@@ -38,6 +38,7 @@ struct TBatchResult
 	std::vector<std::string> files_written;
 	bool evaluated = false;
 	std::optional<eval::TTrajectoryErrors> evaluation;  //!< with a ground truth
+	std::optional<eval::TTrajectoryErrors> evaluation_online;  //!< the same, before the pose graph
 };
 
 class CBatchProcessor

@@ -14,8 +14,12 @@
  * wall_s (whole run, outputs included), ms_per_scan (wall_s per scan),
  * input_error (null if the whole input was read), evaluated, ate_rmse_m,
  * ate_mean_m, ate_max_m, matched_poses (null without a reference),
- * warnings (array of sentences) and, with a reference, evaluation (the
- * object hslam-evaluate --json writes). */
+ * warnings (array of sentences), with a reference evaluation (the
+ * object hslam-evaluate --json writes), and loop_closure (null with
+ * [loop_closure] enabled = false): keyframes, closures_tested,
+ * closures_accepted, closures_rejected, optimizations, backend_ms,
+ * map_rerendered and ate_online_rmse_m (the online trajectory's ATE before
+ * the pose graph, null without a reference). */
 #pragma once
 
 #include <hslam/batch/CBatchProcessor.h>
@@ -26,6 +30,15 @@
 
 namespace hslam::batch
 {
+/** The loop-closure back-end's figures. */
+struct TLoopClosureSummary
+{
+	size_t keyframes = 0, closures_tested = 0, closures_accepted = 0, closures_rejected = 0, optimizations = 0;
+	double backend_ms = 0;  //!< detection and optimisation, summed over the run
+	bool map_rerendered = false;  //!< the map comes from the optimised graph
+	std::optional<double> ate_online_rmse_m;  //!< trajectory_online.tum, with a reference
+};
+
 struct TRunSummary
 {
 	std::string input, output_dir, pose_method;
@@ -44,6 +57,7 @@ struct TRunSummary
 	double ms_per_scan = 0;  //!< wall_s * 1000 / scans (0 without scans)
 	std::string input_error;  //!< empty when the whole input was read
 	std::optional<eval::TTrajectoryErrors> evaluation;
+	std::optional<TLoopClosureSummary> loop_closure;  //!< with [loop_closure] enabled
 	std::vector<std::string> warnings;  //!< things a person should look at
 };
 
