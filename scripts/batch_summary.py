@@ -9,7 +9,8 @@ import json
 import os
 import sys
 
-COLUMNS = ["name", "exit_code", "scans", "ms_per_scan", "wall_s", "ate_rmse_m", "warnings", "report"]
+COLUMNS = ["name", "exit_code", "scans", "ms_per_scan", "wall_s", "ate_rmse_m", "ate_online_rmse_m",
+           "closures_accepted", "warnings", "report"]
 
 
 def last_log_line(run_dir):
@@ -24,7 +25,7 @@ def last_log_line(run_dir):
 def row_of(out_root, name):
     run_dir = os.path.join(out_root, name)
     row = {"name": name, "exit_code": "not run", "scans": "", "ms_per_scan": "", "wall_s": "",
-           "ate_rmse_m": "", "warnings": "", "report": ""}
+           "ate_rmse_m": "", "ate_online_rmse_m": "", "closures_accepted": "", "warnings": "", "report": ""}
     try:
         with open(os.path.join(run_dir, "exit_code")) as f:
             row["exit_code"] = f.read().strip()
@@ -39,6 +40,11 @@ def row_of(out_root, name):
     row.update(scans=s["scans"], ms_per_scan=f"{s['ms_per_scan']:.2f}", wall_s=f"{s['wall_s']:.1f}",
                ate_rmse_m="" if s["ate_rmse_m"] is None else f"{s['ate_rmse_m']:.3f}",
                warnings="; ".join(s["warnings"]), report=f"{name}/report.html")
+    loop = s.get("loop_closure")  # null with the back-end off
+    if loop:
+        online = loop["ate_online_rmse_m"]
+        row.update(ate_online_rmse_m="" if online is None else f"{online:.3f}",
+                   closures_accepted=loop["closures_accepted"])
     return row
 
 
@@ -55,14 +61,15 @@ def main(out_root):
         with open(os.path.join(out_root, "batch_wall_s")) as f:
             wall = f" Batch wall time {f.read().strip()} s."
     md = [f"# Batch summary\n\n{len(rows)} runs.{wall} Columns: laser scans used, wall time per scan "
-          "(outputs included), run wall time, ATE RMSE against the reference (if given), warnings.\n",
-          "| run | exit | scans | ms/scan | wall s | ATE RMSE m | warnings | report |",
-          "| --- | ---: | ---: | ---: | ---: | ---: | --- | --- |"]
+          "(outputs included), run wall time, ATE RMSE against the reference (if given) after and before "
+          "the pose graph, loop closures accepted, warnings.\n",
+          "| run | exit | scans | ms/scan | wall s | ATE RMSE m | ATE before graph m | closures | warnings | report |",
+          "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- |"]
     for r in rows:
         link = f"[report]({r['report']})" if r["report"] else ""
         warnings = r["warnings"].replace("|", "\\|")
         md.append(f"| {r['name']} | {r['exit_code']} | {r['scans']} | {r['ms_per_scan']} | {r['wall_s']} | "
-                  f"{r['ate_rmse_m']} | {warnings} | {link} |")
+                  f"{r['ate_rmse_m']} | {r['ate_online_rmse_m']} | {r['closures_accepted']} | {warnings} | {link} |")
     with open(os.path.join(out_root, "summary.md"), "w", encoding="utf-8") as f:
         f.write("\n".join(md) + "\n")
     print("\n".join(md[1:]))

@@ -45,6 +45,9 @@ class BatchProcess(unittest.TestCase):
                 for row in rows:
                     self.assertEqual(row["exit_code"], "0", f"attempt {attempt}: {row}")
                     self.assertLess(float(row["ate_rmse_m"]), 0.05)  # lab: about 0.01 m
+                    # the back-end's figures: the ATE before the graph, closures accepted
+                    self.assertLess(float(row["ate_online_rmse_m"]), 0.1)
+                    self.assertGreater(int(row["closures_accepted"]), 10)  # lab: about 70
                     run = os.path.join(out, row["name"])
                     self.assertTrue(os.path.exists(os.path.join(run, "trajectory.tum")))
                     self.assertTrue(os.path.exists(os.path.join(run, "log.txt")))
