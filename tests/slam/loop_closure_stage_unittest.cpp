@@ -33,8 +33,10 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <memory>
 #include <sstream>
+#include <vector>
 
 using namespace hslam;
 
@@ -393,15 +395,29 @@ TEST(LoopClosureStage, SummaryAndReportShowTheBackEnd)
 	};
 	run(dir.file("on"), true);
 	size_t tested = 0, accepted = 0;
+	std::map<std::string, size_t> rejectedBecause;  // the CSV's reason column (the 5th) of rejected rows
 	std::istringstream csv(text(dir.file("on/loop_closures.csv")));
 	std::string line;
-	for (std::getline(csv, line); std::getline(csv, line); ++tested) accepted += line.find(",1,accepted,") != std::string::npos;
+	for (std::getline(csv, line); std::getline(csv, line); ++tested)
+	{
+		std::vector<std::string> fields;
+		std::istringstream row(line);
+		for (std::string f; std::getline(row, f, ',');) fields.push_back(f);
+		ASSERT_GT(fields.size(), 4u) << line;
+		(fields[3] == "1" ? accepted : rejectedBecause[fields[4]]) += 1;
+	}
 	ASSERT_GT(accepted, 2u);
+	ASSERT_FALSE(rejectedBecause.empty());
 	const std::string summary = text(dir.file("on/summary.json")), report = text(dir.file("on/report.html"));
 	EXPECT_NE(summary.find("\"closures_tested\": " + std::to_string(tested) + ","), std::string::npos) << summary;
 	EXPECT_NE(summary.find("\"closures_accepted\": " + std::to_string(accepted) + ","), std::string::npos);
 	EXPECT_NE(report.find("id=\"fig-closures_accepted\">" + std::to_string(accepted) + "<"), std::string::npos);
 	EXPECT_NE(report.find("<img src=\"map_loop_closures.png\""), std::string::npos);
+	for (const auto& [reason, n] : rejectedBecause)
+	{
+		EXPECT_NE(summary.find("\"" + reason + "\": " + std::to_string(n)), std::string::npos) << reason;
+		EXPECT_NE(report.find(reason + " " + std::to_string(n)), std::string::npos) << reason;
+	}
 	// the online ATE is trajectory_online.tum's
 	const double online = eval::evaluateTumFiles(sample("lab") + "/ground_truth.tum", dir.file("on/trajectory_online.tum"))
 							  .ate.position_m.rmse;

@@ -119,6 +119,14 @@ void writeEvaluation(std::ostream& h, const TRunSummary& s)
 	h << "</table>\n<p>Also in <a href=\"evaluation.json\">evaluation.json</a>.</p>\n";
 }
 
+/** "low score 298, ambiguous 30" */
+std::string reasonsText(const std::map<std::string, size_t>& counts)
+{
+	std::string out;
+	for (const auto& [reason, n] : counts) out += (out.empty() ? "" : ", ") + reason + " " + std::to_string(n);
+	return out.empty() ? "-" : out;
+}
+
 /** The back-end's figures, the ATE before and after it, and the closures
  * drawn on the map. */
 void writeLoopClosure(std::ostream& h, const TRunSummary& s, const std::string& dir)
@@ -130,6 +138,7 @@ void writeLoopClosure(std::ostream& h, const TRunSummary& s, const std::string& 
 	  << figureRow("closures tested", "closures_tested", std::to_string(l.closures_tested))
 	  << figureRow("closures accepted", "closures_accepted", std::to_string(l.closures_accepted))
 	  << figureRow("closures rejected", "closures_rejected", std::to_string(l.closures_rejected))
+	  << figureRow("rejected because", "rejected_by_reason", reasonsText(l.rejected_by_reason))
 	  << figureRow("optimisations", "optimizations", std::to_string(l.optimizations))
 	  << figureRow("back-end time (ms)", "backend_ms", number(l.backend_ms, "%.1f"))
 	  << figureRow("map re-rendered from the optimised graph", "map_rerendered", l.map_rerendered ? "yes" : "no");

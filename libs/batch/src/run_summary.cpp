@@ -48,7 +48,8 @@ std::optional<TLoopClosureSummary> summarizeLoopClosure(const slam::CMappingPipe
 	s.keyframes = t.keyframes;
 	s.closures_tested = t.candidates_tested;
 	s.closures_accepted = t.closures_accepted;
-	for (const auto& c : stage->backend().closures()) s.closures_rejected += c.accepted ? 0 : 1;
+	for (const auto& c : stage->backend().closures())
+		if (!c.accepted) ++s.closures_rejected, ++s.rejected_by_reason[c.reason];
 	s.optimizations = t.optimizations;
 	s.backend_ms = t.total_ms;
 	s.map_rerendered = pipeline.mapRerendered();
@@ -57,12 +58,20 @@ std::optional<TLoopClosureSummary> summarizeLoopClosure(const slam::CMappingPipe
 	return s;
 }
 
+std::string reasonsJson(const std::map<std::string, size_t>& counts)
+{
+	std::string out = "{";
+	for (const auto& [reason, n] : counts) out += (out.size() > 1 ? ", " : "") + jsonString(reason) + ": " + std::to_string(n);
+	return out + "}";
+}
+
 std::string loopClosureJson(const std::optional<TLoopClosureSummary>& l)
 {
 	if (!l) return "null";
 	return "{\"keyframes\": " + std::to_string(l->keyframes) + ", \"closures_tested\": " +
 		   std::to_string(l->closures_tested) + ", \"closures_accepted\": " + std::to_string(l->closures_accepted) +
 		   ", \"closures_rejected\": " + std::to_string(l->closures_rejected) +
+		   ", \"rejected_by_reason\": " + reasonsJson(l->rejected_by_reason) +
 		   ", \"optimizations\": " + std::to_string(l->optimizations) +
 		   ", \"backend_ms\": " + jsonNumber(l->backend_ms, "%.1f") +
 		   ", \"map_rerendered\": " + (l->map_rerendered ? "true" : "false") + ", \"ate_online_rmse_m\": " +

@@ -17,13 +17,15 @@
  * warnings (array of sentences), with a reference evaluation (the
  * object hslam-evaluate --json writes), and loop_closure (null with
  * [loop_closure] enabled = false): keyframes, closures_tested,
- * closures_accepted, closures_rejected, optimizations, backend_ms,
+ * closures_accepted, closures_rejected, rejected_by_reason (an object:
+ * reason -> count, e.g. "low score", "ambiguous"), optimizations, backend_ms,
  * map_rerendered and ate_online_rmse_m (the online trajectory's ATE before
  * the pose graph, null without a reference). */
 #pragma once
 
 #include <hslam/batch/CBatchProcessor.h>
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +36,7 @@ namespace hslam::batch
 struct TLoopClosureSummary
 {
 	size_t keyframes = 0, closures_tested = 0, closures_accepted = 0, closures_rejected = 0, optimizations = 0;
+	std::map<std::string, size_t> rejected_by_reason;  //!< why the rejected ones were (loop_closures.csv's reason)
 	double backend_ms = 0;  //!< detection and optimisation, summed over the run
 	bool map_rerendered = false;  //!< the map comes from the optimised graph
 	std::optional<double> ate_online_rmse_m;  //!< trajectory_online.tum, with a reference
