@@ -3,6 +3,7 @@
 #include <hslam/common/version.h>
 #include <hslam/eval/evaluation_json.h>
 #include <hslam/batch/run_summary.h>
+#include <hslam/slam/loop_closure_outputs.h>
 
 #include <cmath>
 
@@ -48,8 +49,8 @@ std::optional<TLoopClosureSummary> summarizeLoopClosure(const slam::CMappingPipe
 	s.keyframes = t.keyframes;
 	s.closures_tested = t.candidates_tested;
 	s.closures_accepted = t.closures_accepted;
-	for (const auto& c : stage->backend().closures())
-		if (!c.accepted) ++s.closures_rejected, ++s.rejected_by_reason[c.reason];
+	s.rejected_by_reason = slam::rejectedClosuresByReason(*stage);
+	for (const auto& [reason, n] : s.rejected_by_reason) s.closures_rejected += n;
 	s.optimizations = t.optimizations;
 	s.backend_ms = t.total_ms;
 	s.map_rerendered = pipeline.mapRerendered();

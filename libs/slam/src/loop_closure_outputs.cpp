@@ -7,11 +7,19 @@
 
 namespace hslam::slam
 {
+std::map<std::string, size_t> rejectedClosuresByReason(const CLoopClosureStage& stage)
+{
+	std::map<std::string, size_t> counts;
+	for (const auto& c : stage.backend().closures())
+		if (!c.accepted) ++counts[c.reason];
+	return counts;
+}
+
 void printLoopClosureTiming(const CLoopClosureStage& stage, std::ostream& out)
 {
 	const auto& t = stage.backend().timing();
 	size_t rejected = 0;
-	for (const auto& c : stage.backend().closures()) rejected += c.accepted ? 0 : 1;
+	for (const auto& [reason, n] : rejectedClosuresByReason(stage)) rejected += n;
 	out << "Loop closure back-end (libs/graph):\n"
 		<< "  keyframes:              " << t.keyframes << "\n"
 		<< "  closures tested:        " << t.candidates_tested << " (accepted " << t.closures_accepted

@@ -16,6 +16,7 @@
 #include <hslam/slam/CMappingPipeline.h>
 #include <mrpt/img/CImage.h>
 
+#include <map>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -24,6 +25,10 @@ namespace hslam::slam
 {
 /** Human-readable back-end figures (keyframes, closures, time), one per line. */
 void printLoopClosureTiming(const CLoopClosureStage& stage, std::ostream& out);
+
+/** The tested closures that were not accepted, counted by their reason
+ * (loop_closures.csv's "reason": "low score", "ambiguous", ...). */
+std::map<std::string, size_t> rejectedClosuresByReason(const CLoopClosureStage& stage);
 
 /** Draws every tested closure as a line between the optimised poses of its
  * query and anchor keyframes: accepted ones green and 2 px wide (dropped by
