@@ -526,6 +526,8 @@ void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, c
 		const auto refused = m_motion.contradictedMatchSeed(m_matchTime_s);
 		const size_t refusedSeed = seeds.size();
 		if (m_options.seed_refused_matches && refused) addSeedIfNew(seeds, *refused);
+		if (m_options.standstill_seed_after_gap && m_gapSinceMatch && m_ukf.hasClone())
+			addSeedIfNew(seeds, clonePose);
 		icpMatch = runIcp(frame, scan, seeds, !refused && estimate.motion_prior.empty(), icpResults);
 		recoverAfterGap(frame, scan, icpMatch);
 		if (icpMatch) leaveUnconstrainedAxisToPrior(*icpMatch, frame);

@@ -113,6 +113,12 @@ struct TPoseEstimationOptions
 	 * contradictedMatchSeed; the fit, [icp] seed_fit_sigma_m, decides), and
 	 * restart the filter there once the refusals declare a stall. */
 	bool seed_refused_matches = true;
+	/** icp and lines+icp: while the motion since the last match is not
+	 * odometry's (readings lost, frozen, jumping or stalled: a constant
+	 * velocity stands in, CMotionPrior), also seed ICP at the pose of the
+	 * last match: the robot may have stopped or turned where the constant
+	 * velocity carries it on. The fit ([icp] seed_fit_sigma_m) decides. */
+	bool standstill_seed_after_gap = true;
 	/** icp and lines+icp with point ICP: an ICP match whose fit ([icp]
 	 * seed_fit_sigma_m) is more than this below the fit of the prediction
 	 * itself is not used (issue 12: a match that fits worse than the
@@ -149,6 +155,7 @@ struct TPoseEstimationOptions
 		v.real("keyframe_without_icp_spacings", keyframe_without_icp_spacings, 1.0, 1000.0);
 		v.choice("icp_matcher", icp_matcher, {"mrpt", "point_to_line", "mrpt+point_to_line"});
 		v.flag("seed_refused_matches", seed_refused_matches);
+		v.flag("standstill_seed_after_gap", standstill_seed_after_gap);
 		v.real("max_fit_loss_vs_prediction", max_fit_loss_vs_prediction, -1.0, 1.0);
 		v.flag("parallel_restarts", parallel_restarts);
 		v.integer("max_match_points", max_match_points, 0, 1000000);
