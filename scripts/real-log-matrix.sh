@@ -26,33 +26,23 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 bin=${HSLAM_BIN:-$here/build/bin}
 datasets=${DATASETS:-$here/../shared/datasets/carmen}
 logs=${LOGS:-aces csail intel}
+# shellcheck source=scripts/matrix-run.sh
+source "$here/scripts/matrix-run.sh"
 variants=${VARIANTS:-base urg laseronly freeze gap wbias curve noisy thin}
 
 mkdir -p "$out"
 echo "log,variant,ate_m,odometry_ate_m,rpe5_m,odometry_rpe5_m,scans" > "$out/matrix.csv"
 for log in $logs; do
-	source=$datasets/$log-corrected.log.gz
-	[ -f "$source" ] || { echo "real-log-matrix: $source: no such log (DATASETS=$datasets)" >&2; exit 2; }
+	input_log=$datasets/$log-corrected.log.gz
+	[ -f "$input_log" ] || { echo "real-log-matrix: $input_log: no such log (DATASETS=$datasets)" >&2; exit 2; }
 	for variant in $variants; do
 		run=$out/$log-$variant
 		rm -rf "$run" && mkdir -p "$run"
-		python3 "$here/scripts/perturb_carmen_log.py" "$source" "$run/in.log" "$variant" ||
+		python3 "$here/scripts/perturb_carmen_log.py" "$input_log" "$run/in.log" "$variant" ||
 			{ echo "real-log-matrix: perturbing $log/$variant failed" >&2; exit 1; }
 		"$bin/hslam-carmen2rawlog" --reference "$run/reference.tum" "$run/in.log" "$run/in.rawlog" > "$run/convert.log" 2>&1 ||
 			{ echo "real-log-matrix: converting $log/$variant failed, see $run/convert.log" >&2; exit 1; }
-		"$bin/hslam-process" -c "$here/config_ini/hslam-default.ini" -i "$run/in.rawlog" -o "$run/run" \
-			--ground-truth "$run/reference.tum" -q --overwrite --set output.write_tiles=false "$@" > "$run/process.log" 2>&1 ||
-			{ echo "real-log-matrix: processing $log/$variant failed, see $run/process.log" >&2; exit 1; }
-		"$bin/hslam-evaluate" "$run/reference.tum" "$run/run/odometry.tum" --json "$run/odometry.json" > /dev/null
-		python3 - "$run" "$log" "$variant" "$out/matrix.csv" <<'PY'
-import json, sys
-run, log, variant, csv = sys.argv[1:5]
-est = json.load(open(run + '/run/evaluation.json'))
-odo = json.load(open(run + '/odometry.json'))
-row = (est['ate_rmse_m'], odo['ate_rmse_m'], est['rpe_5m_trans_rmse_m'], odo['rpe_5m_trans_rmse_m'])
-flag = '  WORSE than odometry' if row[0] >= row[1] else ''
-print('%-6s %-12s ate_m=%.3f odometry_ate_m=%.3f rpe5_m=%.3f odometry_rpe5_m=%.3f%s' % ((log, variant) + row + (flag,)))
-open(csv, 'a').write('%s,%s,%.4f,%.4f,%.4f,%.4f,%d\n' % ((log, variant) + row + (est['matched'],)))
-PY
+		matrixRun real-log-matrix "$run" "$run/in.rawlog" "$run/reference.tum" "$run/run/odometry.tum" \
+			"$log" "$variant" "$out/matrix.csv" "$@"
 	done
 done

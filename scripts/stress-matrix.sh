@@ -50,6 +50,8 @@ out=$1; shift
 here=$(cd "$(dirname "$0")/.." && pwd)
 bin=${HSLAM_BIN:-$here/build/bin}
 worlds=${WORLDS:-floor corridor long-corridor open-hall lab floor-laps}
+# shellcheck source=scripts/matrix-run.sh
+source "$here/scripts/matrix-run.sh"
 variants=${VARIANTS:-base urg lms100 far slowscan fastscan wbias dbias noisy fast freeze drop lag creep upsidedown}
 
 variantSettings() {
@@ -88,19 +90,7 @@ for world in $worlds; do
 		# shellcheck disable=SC2086  # the settings are words
 		"$bin/hslam-simulate" -q -c "$here/config_ini/sim-$world.ini" -o "$run/sim" $settings > "$run/simulate.log" 2>&1 ||
 			{ echo "stress-matrix: simulating $world/$variant failed, see $run/simulate.log" >&2; exit 1; }
-		"$bin/hslam-process" -c "$here/config_ini/hslam-default.ini" -i "$run/sim/sim.rawlog" -o "$run/run" \
-			--ground-truth "$run/sim/ground_truth.tum" -q --overwrite --set output.write_tiles=false "$@" > "$run/process.log" 2>&1 ||
-			{ echo "stress-matrix: processing $world/$variant failed, see $run/process.log" >&2; exit 1; }
-		"$bin/hslam-evaluate" "$run/sim/ground_truth.tum" "$run/sim/odometry.tum" --json "$run/odometry.json" > /dev/null
-		python3 - "$run" "$world" "$variant" "$out/matrix.csv" <<'PY'
-import json, sys
-run, world, variant, csv = sys.argv[1:5]
-est = json.load(open(run + '/run/evaluation.json'))
-odo = json.load(open(run + '/odometry.json'))
-row = (est['ate_rmse_m'], odo['ate_rmse_m'], est['rpe_5m_trans_rmse_m'], odo['rpe_5m_trans_rmse_m'])
-flag = '  WORSE than odometry' if row[0] >= row[1] else ''
-print('%-14s %-9s ate_m=%.3f odometry_ate_m=%.3f rpe5_m=%.3f odometry_rpe5_m=%.3f%s' % ((world, variant) + row + (flag,)))
-open(csv, 'a').write('%s,%s,%.4f,%.4f,%.4f,%.4f,%d\n' % ((world, variant) + row + (est['matched'],)))
-PY
+		matrixRun stress-matrix "$run" "$run/sim/sim.rawlog" "$run/sim/ground_truth.tum" "$run/sim/odometry.tum" \
+			"$world" "$variant" "$out/matrix.csv" "$@"
 	done
 done
