@@ -133,10 +133,10 @@ TEST_F(AcesLog, OdometryGapDoesNotMakeTheEstimateDiverge)
 namespace
 {
 /** ATE (m) of the front-end (online) and of the whole default pipeline on
- * aces whose odometry readings repeat
- * the one of scan `first` up to scan `last` and then resume (a driver that
- * stalls, then reports the motion made meanwhile in one step), or that are
- * all zero when `first` is 0 and `last` is past the end (a laser-only log). */
+ * aces whose odometry readings repeat the one of scan `first` up to scan
+ * `last` and then resume (a driver that stalls, then reports the motion made
+ * meanwhile in one step), or that are all zero when `first` is 0 and `last`
+ * is past the end (a laser-only log). */
 std::pair<double, double> ateWithFrozenOdometry(const std::string& logDir, size_t first, size_t last,
 												 bool standstillSeed)
 {
