@@ -24,6 +24,7 @@ default 1/3; for noisy, the draw of the noise, an integer, default 7):
 """
 import gzip
 import math
+import os
 import random
 import sys
 
@@ -96,26 +97,36 @@ class OdometryRewriter:
         return tuple(self.pose)
 
 
-def scan_ranges(fields):
+def floats(fields, start, count, where):
+    """count numbers from fields[start:]; a clear error naming `where` (FILE:LINE) otherwise."""
     try:
-        n = int(fields[1])
-        return n, [float(v) for v in fields[2:2 + n]]
-    except (IndexError, ValueError):
-        return 0, []
+        values = [float(v) for v in fields[start:start + count]]
+    except ValueError:
+        values = []
+    if len(values) != count:
+        fail("%s: %s: expected %d numbers from field %d" % (where, fields[0], count, start + 1))
+    return values
 
 
-def perturb(lines, variant, fraction, seed):
+def scan_ranges(fields, where):
+    if len(fields) < 2 or not fields[1].isdigit():
+        fail("%s: FLASER: the field after FLASER must be the number of ranges" % where)
+    return int(fields[1]), floats(fields, 2, int(fields[1]), where)
+
+
+def perturb(lines, variant, fraction, seed, path):
     scans = [i for i, l in enumerate(lines) if l.startswith("FLASER")]
     if not scans:
         fail("no FLASER lines: not a CARMEN laser log")
     first = int(len(scans) * fraction)
     fault = (scans[first], scans[min(len(scans) - 1, first + FAULT_SCANS)])
-    no_return = max(max(scan_ranges(lines[i].split())[1] or [0]) for i in scans[:50])
+    at = lambda i: "%s:%d" % (path, i + 1)  # noqa: E731 (FILE:LINE of line i)
+    no_return = max(max(scan_ranges(lines[i].split(), at(i))[1] or [0]) for i in scans[:50])
     rewrite, frozen, kept_scans, out = OdometryRewriter(variant, random.Random(seed)), None, 0, []
     for index, line in enumerate(lines):
         f = line.split()
-        if f and f[0] == "ODOM" and len(f) >= 4:
-            raw = tuple(map(float, f[1:4]))
+        if f and f[0] == "ODOM":
+            raw = tuple(floats(f, 1, 3, at(index)))
             pose = raw
             if variant in ("wbias", "curve", "noisy"):
                 pose = rewrite(*raw)
@@ -134,7 +145,7 @@ def perturb(lines, variant, fraction, seed):
             if kept_scans % 2 == 0:
                 continue
         elif f and f[0] == "FLASER" and variant == "urg":
-            n, ranges = scan_ranges(f)
+            n, ranges = scan_ranges(f, at(index))
             f[2:2 + n] = ["%g" % (no_return if r > URG_RANGE_M else r) for r in ranges]
             line = " ".join(f)
         out.append(line)
@@ -146,9 +157,9 @@ def main(argv):
         sys.stderr.write(__doc__)
         return 2
     variant, fraction, seed = parse_variant(argv[3])
-    lines = perturb(read_lines(argv[1]), variant, fraction, seed)
-    if argv[2] == argv[1]:
-        fail("the output must not overwrite the input")
+    if os.path.realpath(argv[2]) == os.path.realpath(argv[1]):
+        fail("%s: the output must not overwrite the input" % argv[2])
+    lines = perturb(read_lines(argv[1]), variant, fraction, seed, argv[1])
     with open(argv[2], "w") as f:
         f.write("\n".join(lines) + "\n")
     return 0
