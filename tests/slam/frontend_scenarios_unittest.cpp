@@ -89,6 +89,10 @@ const std::vector<std::string> kPointToPointStandstillCheck{"icp.standstill_poin
  * rule that only ICP places keyframes contains some of them as well, so
  * their counterfactuals pin the old policy. */
 const std::string kAnyKeyframes = "pose_estimation.keyframes_after_icp_only=false";
+/** Counterfactuals measured before the wide search after a poor match ([gap_search] after_poor_match)... */
+const std::string kNoSlipSearch = "gap_search.after_poor_match=false";
+/** ...and before refused matches needed readings that creep to declare a stall ([motion_prior] stall_needs_creeping). */
+const std::string kStallOnAnyRefusal = "motion_prior.stall_needs_creeping=false";
 
 std::string shipped(const std::string& name) { return std::string(HSLAM_SOURCE_DIR) + "/rawlog_samples/" + name; }
 
@@ -437,16 +441,20 @@ TEST(FrontEndScenarios, LongRangeLaserDownACorridorIsNotPinnedByGrazingPoints)
 	// counterfactuals go without it)
 	// (and only ICP placing keyframes contains it too: 0.310 m; the
 	// counterfactuals pin the old keyframe policy)
-	const TScores mrptRule = runDefault(folder, {"icp.stage_step_fraction=0", "icp.covariance_full_weight_spacing_m=0",
-												 "pose_estimation.max_fit_loss_vs_prediction=-1", kAnyKeyframes});
+	// (a stall declared only for readings that creep, [motion_prior]
+	// stall_needs_creeping, partly: 0.339 m; the counterfactuals go without it
+	// and without the wide search after a poor match that came with it)
+	const TScores mrptRule =
+		runDefault(folder, {"icp.stage_step_fraction=0", "icp.covariance_full_weight_spacing_m=0",
+							"pose_estimation.max_fit_loss_vs_prediction=-1", kAnyKeyframes, kNoSlipSearch, kStallOnAnyRefusal});
 	const TScores grazingOut =
 		runDefault(folder, {"icp.stage_step_fraction=0", "icp.max_incidence_deg=85", "icp.covariance_full_weight_spacing_m=0",
-							"pose_estimation.max_fit_loss_vs_prediction=-1", kAnyKeyframes});
+							"pose_estimation.max_fit_loss_vs_prediction=-1", kAnyKeyframes, kNoSlipSearch, kStallOnAnyRefusal});
 	print("corridor at 20 m, default", byDefault);
 	print("corridor at 20 m, every stage to 1e-6", mrptRule);
 	print("corridor at 20 m, every stage to 1e-6, grazing points not aligned", grazingOut);
 	EXPECT_LT(byDefault.ate_m, 0.1);  // measured 0.020 m (odometry 0.83 m)
-	EXPECT_GT(mrptRule.ate_m, 0.4);  // measured 0.511 m: this test can fail
+	EXPECT_GT(mrptRule.ate_m, 0.4);  // measured 0.538 m: this test can fail
 	EXPECT_LT(grazingOut.ate_m, 0.15);  // measured 0.043 m
 	EXPECT_LT(byDefault.ate_m, 0.25 * byDefault.odometry_ate_m);
 }
@@ -590,10 +598,12 @@ TEST(FrontEndScenarios, ShortRangeScannerInAnOpenHallIsNoWorseThanOdometry)
 	EXPECT_LT(s.ate_m, 0.95 * s.odometry_ate_m);  // measured 0.725 m against 0.780 m
 	EXPECT_LT(s.rpe5_m, 1.05 * s.odometry_rpe5_m);  // measured 0.0794 against 0.0785 m
 	// The remedies for few-point matches, measured under the old keyframe
-	// policy, where ICP matched such scans.
-	const TScores old = runDefault(hall, {kAnyKeyframes});
-	const TScores byGoodness = runDefault(hall, {"icp.min_good_points=0", kAnyKeyframes});
-	const TScores notRestarted = runDefault(hall, {"icp.restart_below_good_points=false", kAnyKeyframes});
+	// policy, where ICP matched such scans, and without the wide search
+	// after a poor match, which came later (with it the old policy's run is
+	// 0.655 m: pillars alike give the search more than one place).
+	const TScores old = runDefault(hall, {kAnyKeyframes, kNoSlipSearch});
+	const TScores byGoodness = runDefault(hall, {"icp.min_good_points=0", kAnyKeyframes, kNoSlipSearch});
+	const TScores notRestarted = runDefault(hall, {"icp.restart_below_good_points=false", kAnyKeyframes, kNoSlipSearch});
 	print("open hall, 5.6 m scanner, any keyframes", old);
 	print("open hall, 5.6 m scanner, any keyframes, few-point matches good", byGoodness);
 	print("open hall, 5.6 m scanner, any keyframes, few-point matches not restarted", notRestarted);

@@ -90,3 +90,27 @@ TEST(GapSearch, PointsBeyondItsRangeAreLeftOut)
 	ASSERT_TRUE(found.has_value());
 	EXPECT_NEAR(found->x(), 0.5, 0.1);  // the robot moved 0.5 m towards the wall
 }
+
+TEST(GapSearch, AfterAPoorMatchWithOdometryTheHeadingWindowIsWide)
+{
+	// odometry's model for a 1 m step turning 12 deg: 0.12 m and 5 deg std,
+	// a window that ICP's restarts cover; a slip of 40 deg is outside it
+	slam::CGapSearch search;
+	const Eigen::Matrix3d model = Eigen::Vector3d(0.0144, 0.0144, std::pow(mrpt::DEG2RAD(5.0), 2)).asDiagonal();
+	EXPECT_FALSE(search.windowFor(model).has_value());
+	const auto window = search.slipWindowFor(model);
+	ASSERT_TRUE(window.has_value());
+	EXPECT_NEAR(window->xy_m, 0.36, 1e-12);  // 3 sigma
+	EXPECT_NEAR(window->yaw_rad, mrpt::DEG2RAD(45.0), 1e-12);  // slip_min_yaw_deg
+	// the room seen from two poses: odometry said 12 deg, the robot turned 52
+	const mrpt::poses::CPose2D first(2, 1.5, mrpt::DEG2RAD(40)), second(2.9, 2.0, mrpt::DEG2RAD(92));
+	const mrpt::poses::CPose2D truth = second - first;
+	const mrpt::poses::CPose2D odometry(truth.x(), truth.y(), truth.phi() - mrpt::DEG2RAD(40.0));
+	const auto found = search.search(scanFrom(first, 3), scanFrom(second, 4), odometry, *window, true);
+	ASSERT_TRUE(found.has_value());
+	EXPECT_LT(found->distanceTo(truth), 0.15) << found->asString();
+	EXPECT_LT(std::abs(mrpt::math::wrapToPi(found->phi() - truth.phi())), mrpt::DEG2RAD(2.0));
+	slam::TGapSearchOptions off;
+	off.after_poor_match = false;
+	EXPECT_FALSE(slam::CGapSearch(off).slipWindowFor(model).has_value());
+}

@@ -170,6 +170,37 @@ TEST(MotionPrior, MatchesAcceptedFarOutsideThePredictionCountAsRefused)
 	EXPECT_NE(old.prior(odometry(0.001, 0, 0), t + 0.2).reason, "stalled");
 }
 
+TEST(MotionPrior, MatchesContradictingReadingsThatMoveAreNoStall)
+{
+	// csail with noisy odometry, draw 4, t = 363-365 s: steps of about 1 m,
+	// a scan a second, the readings' heading 20-25 deg off; three
+	// well-constrained matches accepted at NIS 19, 17 and 36. The readings
+	// showed the motion (1 m of the matched 1 m): noise, not a stall.
+	const auto run = [](bool needsCreeping) {
+		CMotionPrior::TOptions o;
+		o.stall_needs_creeping = needsCreeping;
+		CMotionPrior prior(o);
+		const Eigen::Matrix3d wellConstrained = Eigen::Vector3d(0.03 * 0.03, 0.02 * 0.02, 0.01).asDiagonal();
+		double t = 362.0;
+		prior.prior(odometry(1.0, 0, 0.1), t);
+		prior.observeMatch(CPose2D(0, 0, 0), wellConstrained, true, 2.0, t);
+		prior.observePose(CPose2D(0, 0, 0), t);
+		const double nis[] = {19.3, 16.8, 35.8};
+		CPose2D matched;
+		for (int k = 0; k < 3; ++k)
+		{
+			t += 1.0;
+			prior.prior(odometry(1.0, 0.0, 0.4), t);  // the readings: 1 m and 23 deg of turn
+			matched = matched + CPose2D(1.0, 0.0, -0.3);  // the matches: 1 m and -17 deg
+			prior.observeMatch(matched, wellConstrained, true, nis[k], t);
+			prior.observePose(matched, t);
+		}
+		return prior.prior(odometry(1.0, 0, 0.4), t + 1.0).reason;
+	};
+	EXPECT_NE(run(true), "stalled");
+	EXPECT_EQ(run(false), "stalled");  // the rule as it was: a constant velocity took over
+}
+
 TEST(MotionPrior, NoRefusedSeedOnceAMatchAgreesOrTheWindowHasPassed)
 {
 	CMotionPrior prior;

@@ -59,6 +59,7 @@ TMotionPrior CMotionPrior::prior(const TOdometryIncrement& increment, double t_s
 	const double dt = m_haveScan ? std::clamp(t_s - m_lastScan_s, 0.0, 10.0) : 0.0;
 	m_lastScan_s = t_s, m_haveScan = true;
 	m_lastOdometry = increment.known ? increment.delta : mrpt::poses::CPose2D();
+	m_odometrySinceMatch = m_odometrySinceMatch + m_lastOdometry;
 	m_lastOdometryKnown = increment.known;
 	TMotionPrior p = choose(increment, dt, t_s);
 	if (p.source == TMotionPrior::ESource::odometry) m_faultAtSpeed = false;
@@ -119,7 +120,8 @@ bool CMotionPrior::odometryStalled(double t_s) const
 	const bool moved = est_m >= m_options.disagreement_min_motion_m,
 			   turned = est_rad >= m_options.disagreement_min_rotation_rad;
 	if ((moved && odo_m < k * est_m) || (turned && odo_rad < k * est_rad) ||
-		m_rejectedInARow >= m_options.rejected_matches_for_stall)
+		(m_options.stall_needs_creeping ? m_rejectedCreepingInARow : m_rejectedInARow) >=
+			m_options.rejected_matches_for_stall)
 		return true;
 	// stalled: stays so until the motion within the window shows odometry
 	// agrees again (a window without any interval holds no evidence either way)
@@ -132,6 +134,8 @@ void CMotionPrior::observeMatch(const mrpt::poses::CPose2D& measured, const Eige
 	if (!constrainsTranslation(covariance)) return;
 	const bool contradicted = !accepted || (m_options.contradicting_nis > 0 && nis > m_options.contradicting_nis);
 	m_rejectedInARow = contradicted ? m_rejectedInARow + 1 : 0;
+	m_rejectedCreepingInARow = contradicted && odometryCreptSince(measured) ? m_rejectedCreepingInARow + 1 : 0;
+	m_odometrySinceMatch = mrpt::poses::CPose2D();
 	if (stalledBaseline())
 		measureStalledVelocity(measured, t_s);
 	else if (m_havePreviousMatch && t_s - m_previousMatch_s >= m_options.min_interval_s &&
@@ -161,6 +165,18 @@ void CMotionPrior::measureStalledVelocity(const mrpt::poses::CPose2D& measured, 
 		m_measuredVelocity_s = t_s;
 	}
 	m_stalledMatches.emplace_back(t_s, measured);
+}
+
+bool CMotionPrior::odometryCreptSince(const mrpt::poses::CPose2D& measured) const
+{
+	if (!m_havePreviousMatch) return true;
+	const mrpt::poses::CPose2D matched = measured - m_previousMatch;
+	const double k = m_options.disagreement_ratio;
+	const double matched_rad = std::abs(mrpt::math::wrapToPi(matched.phi()));
+	const bool showedTranslation = m_odometrySinceMatch.norm() >= std::max(m_options.creep_min_motion_m, k * matched.norm());
+	const bool showedRotation =
+		std::abs(m_odometrySinceMatch.phi()) >= std::max(m_options.creep_min_rotation_rad, k * matched_rad);
+	return !showedTranslation && !showedRotation;
 }
 
 bool CMotionPrior::constrainsTranslation(const Eigen::Matrix3d& covariance) const

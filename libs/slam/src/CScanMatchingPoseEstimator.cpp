@@ -182,6 +182,8 @@ void CScanMatchingPoseEstimator::predict(const TOdometryIncrement& increment, co
 	else  // a gap keeps the wide covariance of [ukf]; frozen/stalled/jump the prior's
 		m_ukf.predict(u, increment.known ? prior.covariance : Eigen::Matrix3d(prior.covariance.cwiseMax(unknownCov)));
 	m_sinceMatch = m_sinceMatch + prior.delta;
+	if (prior.source == TMotionPrior::ESource::odometry && (prior.delta.norm() > 0 || prior.delta.phi() != 0))
+		m_odometryHasMoved = true;
 	m_sinceIcp = m_sinceIcp + prior.delta;
 	if (prior.source != TMotionPrior::ESource::odometry)
 	{
@@ -317,8 +319,8 @@ void CScanMatchingPoseEstimator::addKeyframeIfDue(const common::TRangeData& scan
 		m_keyframes.addKeyframe(pose, scan.points.xy), m_lastKeyframe_s = scan.t_s;
 }
 
-void CScanMatchingPoseEstimator::recoverAfterGap(const matching::TLineScanFrame& frame, const common::TRangeData& scan,
-												 std::optional<matching::TPoseMatch>& icpMatch)
+void CScanMatchingPoseEstimator::searchWiderIfPoor(const matching::TLineScanFrame& frame, const common::TRangeData& scan,
+												   std::optional<matching::TPoseMatch>& icpMatch)
 {
 	// A match that is good and fits is kept: the search is a recovery, not a
 	// competitor (in a room of repeated structure a wide search finds more
@@ -326,14 +328,20 @@ void CScanMatchingPoseEstimator::recoverAfterGap(const matching::TLineScanFrame&
 	const bool poor = !icpMatch || icpMatch->quality != matching::EMatchQuality::good ||
 					  icpMatch->fit < m_icp.options().restart_below_fit;
 	if (!poor) return;
-	const auto searched = gapSearchSeed(frame);
+	const auto searched = wideSearchSeed(frame);
 	if (!searched) return;
+	const auto& o = m_gapSearch.options();
+	if (!m_gapSinceMatch && icpMatch)
+	{  // where the first match already is, ICP would end there again (aces: 120 of 120 searches)
+		const auto d = *searched - icpMatch->pose;
+		if (d.norm() < o.slip_same_basin_m && std::abs(mrpt::math::wrapToPi(d.phi())) < o.slip_same_basin_rad) return;
+	}
 	std::vector<matching::TPoseMatch> results;
 	const auto recovered = runIcp(frame, scan, {*searched}, false, results);
 	// the scan must clearly prefer the searched pose (csail from entry 400:
 	// a first match 0.02 m off fitting 0.603, the searched one 0.7 m off 0.617)
 	if (recovered && recovered->quality != matching::EMatchQuality::failed &&
-		(!icpMatch || recovered->fit >= icpMatch->fit + m_gapSearch.options().min_fit_gain))
+		(!icpMatch || recovered->fit >= icpMatch->fit + o.min_fit_gain))
 		icpMatch = recovered;
 }
 
@@ -382,17 +390,27 @@ void CScanMatchingPoseEstimator::leaveUnconstrainedAxisToPrior(matching::TPoseMa
 	match.covariance.topLeftCorner<2, 2>() += geometric.max_std_m * geometric.max_std_m * d * d.transpose();
 }
 
-std::optional<mrpt::poses::CPose2D> CScanMatchingPoseEstimator::gapSearchSeed(const matching::TLineScanFrame& frame)
+std::optional<mrpt::poses::CPose2D> CScanMatchingPoseEstimator::wideSearchSeed(const matching::TLineScanFrame& frame)
 {
-	// Only while the motion since the last match is unknown: a velocity held
-	// through a fault at speed is a prediction (CMotionPrior max_decel_mps2),
-	// and down a corridor a search would find any place along the axis.
-	if (!m_gapSinceMatch || m_gapVelocityMeasured || !m_previousFrame || !m_ukf.hasClone()) return std::nullopt;
-	const auto window = m_gapSearch.windowFor(m_priorCovSinceMatch);
+	// After a gap, only while the motion since the last match is unknown: a
+	// velocity held through a fault at speed is a prediction (CMotionPrior
+	// max_decel_mps2), and down a corridor a search would find any place
+	// along the axis. With odometry, a heading slip beyond its model
+	// ([gap_search] after_poor_match).
+	if ((m_gapSinceMatch && m_gapVelocityMeasured) || !m_previousFrame || !m_ukf.hasClone()) return std::nullopt;
+	// odometry that never moved has no slip: a robot at rest, or a log
+	// without odometry before its zeros count as frozen (laser-only csail
+	// from its first scan: a searched turn the filter refused against their
+	// zero motion moved the run from 1.8 to 6.5 m); zeros after motion may
+	// be readings that froze, and are searched
+	if (!m_gapSinceMatch && !m_odometryHasMoved) return std::nullopt;
+	const auto window =
+		m_gapSinceMatch ? m_gapSearch.windowFor(m_priorCovSinceMatch) : m_gapSearch.slipWindowFor(m_sinceMatchCov);
 	if (!window) return std::nullopt;
 	common::CStageTimer::CScope t(m_timer, "gap_search");
 	const mrpt::poses::CPose2D clonePose = toPose(m_ukf.clonePose());
-	const auto relative = m_gapSearch.search(m_previousFrame->pointsMap, frame.pointsMap, currentPose() - clonePose, *window);
+	const auto relative =
+		m_gapSearch.search(m_previousFrame->pointsMap, frame.pointsMap, currentPose() - clonePose, *window, !m_gapSinceMatch);
 	if (!relative) return std::nullopt;
 	return clonePose + *relative;
 }
@@ -529,7 +547,7 @@ void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, c
 		if (m_options.standstill_seed_after_gap && m_gapSinceMatch && m_ukf.hasClone())
 			addSeedIfNew(seeds, clonePose);
 		icpMatch = runIcp(frame, scan, seeds, !refused && estimate.motion_prior.empty(), icpResults);
-		recoverAfterGap(frame, scan, icpMatch);
+		searchWiderIfPoor(frame, scan, icpMatch);
 		if (icpMatch) leaveUnconstrainedAxisToPrior(*icpMatch, frame);
 		if (icpMatch && refusedSeed < icpResults.size() &&
 			matching::competesWith(*icpMatch, icpResults[refusedSeed], m_icp.options().competing))

@@ -17,7 +17,13 @@
  * decides (CScanMatchingPoseEstimator::runIcp), so a search that lands in
  * the wrong place of a symmetric room loses to a prediction that fits
  * better. Both scans are cut at max_range_m so the likelihood field stays
- * small. No I/O. */
+ * small.
+ *
+ * The same search runs after a poor match with odometry (after_poor_match):
+ * odometry's heading errors are heavy-tailed, and a slip of 40-50 deg (csail
+ * with noisy readings) leaves ICP and its restarts in a wrong basin near the
+ * prediction. Its window is the odometry model's with at least
+ * slip_min_yaw_rad of heading, its scans cut at slip_max_range_m. No I/O. */
 #pragma once
 
 #include <hslam/graph/CCorrelativeScanMatcher.h>
@@ -46,6 +52,17 @@ struct TGapSearchOptions
 	/** ICP from the searched pose replaces the first match only if it fits
 	 * the keyframes ([icp] seed_fit_sigma_m) at least this much better. */
 	double min_fit_gain = 0.1;
+	/** Also search after a poor match with odometry (not good, or fitting
+	 * below [icp] restart_below_fit): a heading slip beyond the odometry
+	 * model leaves ICP and its restarts in a wrong basin near the
+	 * prediction. The window's heading is at least slip_min_yaw_rad; points
+	 * beyond slip_max_range_m are left out (fewer rotations to test). */
+	bool after_poor_match = true;
+	double slip_min_yaw_rad = 45.0 * M_PI / 180.0;
+	double slip_max_range_m = 8;
+	/** A searched pose this close to the first match is not refined (ICP would end there again). */
+	double slip_same_basin_m = 0.25;
+	double slip_same_basin_rad = 5.0 * M_PI / 180.0;
 
 	template <class V>
 	void visit(V& v)
@@ -61,6 +78,11 @@ struct TGapSearchOptions
 		v.real("kernel_sigma_m", kernel_sigma_m, 0.005, 1.0);
 		v.real("min_score", min_score, 0.0, 1.0);
 		v.real("min_fit_gain", min_fit_gain, 0.0, 1.0);
+		v.flag("after_poor_match", after_poor_match);
+		v.degrees("slip_min_yaw_deg", slip_min_yaw_rad, 0.0, 180.0);
+		v.real("slip_max_range_m", slip_max_range_m, 1.0, 200.0);
+		v.real("slip_same_basin_m", slip_same_basin_m, 0.0, 10.0);
+		v.degrees("slip_same_basin_deg", slip_same_basin_rad, 0.0, 180.0);
 	}
 };
 
@@ -74,14 +96,17 @@ class CGapSearch
 	 * (x, y, yaw of the motion since the last match); nullopt when it is
 	 * within ICP's basin or the search is off. */
 	std::optional<graph::TSearchWindow> windowFor(const Eigen::Matrix3d& motionCov) const;
+	/** The window after a poor match with odometry: windowFor's, with at
+	 * least slip_min_yaw_rad of heading; nullopt when after_poor_match is off. */
+	std::optional<graph::TSearchWindow> slipWindowFor(const Eigen::Matrix3d& motionCov) const;
 
 	/** Pose of the current scan (robot-frame points `scan`) relative to the
 	 * previous one (robot-frame points `previous`), best in `window` around
 	 * `guess` (the predicted relative motion); nullopt if nothing scores
-	 * min_score. */
+	 * min_score. `slip`: points cut at slip_max_range_m, not max_range_m. */
 	std::optional<mrpt::poses::CPose2D> search(const mrpt::maps::CSimplePointsMap& previous,
 											   const mrpt::maps::CSimplePointsMap& scan, const mrpt::poses::CPose2D& guess,
-											   const graph::TSearchWindow& window) const;
+											   const graph::TSearchWindow& window, bool slip = false) const;
 
    private:
 	TGapSearchOptions m_options;

@@ -96,6 +96,14 @@ class CMotionPrior
 		bool stall_ends_on_agreement = true;
 		double measured_max_std_m = 0.1;  //!< see observeMatch()
 		int rejected_matches_for_stall = 3;  //!< see file comment ("stalled")
+		/** Rejected matches count towards a stall only where odometry did
+		 * not show the matched motion: neither creep_min_motion_m and
+		 * disagreement_ratio of the matched translation, nor
+		 * creep_min_rotation_deg and that ratio of the matched rotation.
+		 * Readings that creep show neither; noisy readings that move do. */
+		bool stall_needs_creeping = true;
+		double creep_min_motion_m = 0.02;
+		double creep_min_rotation_rad = 2.0 * M_PI / 180.0;
 		double contradicting_nis = 16.27;  //!< an accepted match above this NIS counts as rejected (0 = off)
 		double min_interval_s = 0.25;  //!< speeds are judged over at least this interval (see file comment)
 		/** Odometry that drops to exact zeros from a speed no robot could
@@ -132,6 +140,9 @@ class CMotionPrior
 			v.flag("stall_ends_on_agreement", stall_ends_on_agreement);
 			v.real("measured_max_std_m", measured_max_std_m, 0.001, 100.0);
 			v.integer("rejected_matches_for_stall", rejected_matches_for_stall, 1, 1000);
+			v.flag("stall_needs_creeping", stall_needs_creeping);
+			v.real("creep_min_motion_m", creep_min_motion_m, 0.0, 10.0);
+			v.degrees("creep_min_rotation_deg", creep_min_rotation_rad, 0.0, 180.0);
 			v.real("contradicting_nis", contradicting_nis, 0.0, 1e6);
 			v.real("min_interval_s", min_interval_s, 0.0, 10.0);
 			v.real("max_decel_mps2", max_decel_mps2, 0.0, 100.0);
@@ -161,6 +172,8 @@ class CMotionPrior
 	/** Whether a match of this covariance (x m, y m, theta rad) constrains
 	 * the translation in every direction (std <= measured_max_std_m). */
 	bool constrainsTranslation(const Eigen::Matrix3d& covariance) const;
+	/** Odometry since the last well-constrained match did not show the motion to `measured` (stall_needs_creeping). */
+	bool odometryCreptSince(const mrpt::poses::CPose2D& measured) const;
 	/** While the filter contradicts the well-constrained matches (the last
 	 * one rejected, or accepted above contradicting_nis): where the last of
 	 * them puts the robot at `t_s`, moved on at velocity(); a seed for the
@@ -204,6 +217,9 @@ class CMotionPrior
 	std::deque<TIntervalMotion> m_recent;
 	bool m_stalled = false;  //!< the last prior was "stalled"
 	int m_rejectedInARow = 0;  //!< well-constrained matches the filter rejected in a row
+	/** ...of which odometry showed less than disagreement_ratio of the matched motion */
+	int m_rejectedCreepingInARow = 0;
+	mrpt::poses::CPose2D m_odometrySinceMatch;  //!< odometry since the last well-constrained match
 	mrpt::poses::CPose2D m_previousMatch;  //!< the last well-constrained measured pose...
 	double m_previousMatch_s = 0;  //!< ...its time
 	bool m_havePreviousMatch = false;

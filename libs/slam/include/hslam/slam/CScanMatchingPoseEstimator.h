@@ -182,12 +182,13 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	std::optional<matching::TPoseMatch> runPointToLineIcp(const common::TRangeData& scan,
 														   const std::vector<mrpt::poses::CPose2D>& seedsWorld);
 	void addKeyframeIfDue(const common::TRangeData& scan, const TPoseEstimate& estimate);
-	/** After a gap of unknown motion, a match that is not good or fits
-	 * poorly is retried from the gap search's pose; the better fit is kept. */
-	void recoverAfterGap(const matching::TLineScanFrame& frame, const common::TRangeData& scan,
-						 std::optional<matching::TPoseMatch>& icpMatch);
-	/** After a gap of unknown motion: the gap search's pose of `frame` (world), if any. */
-	std::optional<mrpt::poses::CPose2D> gapSearchSeed(const matching::TLineScanFrame& frame);
+	/** A match that is not good or fits poorly, after a gap of unknown
+	 * motion or (after_poor_match) with odometry, is retried from the wide
+	 * search's pose; the clearly better fit is kept. */
+	void searchWiderIfPoor(const matching::TLineScanFrame& frame, const common::TRangeData& scan,
+						   std::optional<matching::TPoseMatch>& icpMatch);
+	/** The wide search's pose of `frame` (world), if any (CGapSearch). */
+	std::optional<mrpt::poses::CPose2D> wideSearchSeed(const matching::TLineScanFrame& frame);
 	/** While stalled: a direction the scan's surfaces leave unconstrained
 	 * gets a huge variance in `match` ([pose_estimation]
 	 * stalled_unconstrained_max_fraction). */
@@ -239,6 +240,7 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	double m_lastKeyframe_s = -1e300;  //!< scan time of the last ICP keyframe
 	bool m_stalledSinceMatch = false;  //!< the prior was a stall's constant velocity since the last match
 	bool m_gapSinceMatch = false;  //!< the prior was not odometry since the last match: match (and ICP) now
+	bool m_odometryHasMoved = false;  //!< some odometry increment so far was not zero
 	double m_lastIcp_s = 0;  //!< time of the last ICP match
 	double m_matchTime_s = 0;  //!< time of the scan being matched
 	bool m_timedMatch = false;  //!< this match is due by time only (match_every_s)
