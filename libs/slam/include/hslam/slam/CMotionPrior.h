@@ -13,7 +13,9 @@
  *             disagreement_ratio of that, or the same in rotation:
  *             "wheel readings nearly constant" without being exactly so; or
  *             the filter rejected rejected_matches_for_stall well-constrained
- *             matches in a row: a filter that trusts creeping odometry
+ *             matches in a row while the readings did not show the matched
+ *             motion (stall_needs_creeping: noisy readings that move are no
+ *             stall): a filter that trusts creeping odometry
  *             rejects the matches that contradict it, so the estimate alone
  *             would never move; a match it accepted with a normalised
  *             innovation above contradicting_nis counts as rejected too:
@@ -217,7 +219,7 @@ class CMotionPrior
 	std::deque<TIntervalMotion> m_recent;
 	bool m_stalled = false;  //!< the last prior was "stalled"
 	int m_rejectedInARow = 0;  //!< well-constrained matches the filter rejected in a row
-	/** ...of which odometry showed less than disagreement_ratio of the matched motion */
+	/** ...while the readings did not show the matched motion (odometryCreptSince) */
 	int m_rejectedCreepingInARow = 0;
 	mrpt::poses::CPose2D m_odometrySinceMatch;  //!< odometry since the last well-constrained match
 	mrpt::poses::CPose2D m_previousMatch;  //!< the last well-constrained measured pose...
