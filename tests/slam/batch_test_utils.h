@@ -2,9 +2,16 @@
 #pragma once
 
 #include <hslam/batch/CBatchProcessor.h>
+#include <hslam/common/config_overrides.h>
+#include <hslam/io/CRawlogReader.h>
 #include <hslam/io/carmen_import.h>
+#include <hslam/slam/CMappingPipeline.h>
 #include <hslam/testing/test_paths.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+#include <mrpt/obs/CObservationOdometry.h>
 
+#include <functional>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -33,5 +40,26 @@ inline void convertCarmenReferenceLog(const std::string& name, const std::string
 {
 	io::convertCarmenLog(std::string(HSLAM_SHARED_DATASETS_DIR) + "/carmen/" + name + "-corrected.log.gz",
 						 dir + "/" + name + ".rawlog", dir + "/" + name + ".tum", io::TCarmenImportOptions());
+}
+
+/** The pipeline (default INI plus `overrides`) over `rawlog` whose odometry
+ * readings pass through `rewrite` first (the reading, and the scans read so
+ * far): a robot whose wheels froze, slipped or were never read. Finished. */
+inline std::unique_ptr<CMappingPipeline> runWithRewrittenOdometry(
+	const std::string& rawlog, const std::vector<std::string>& overrides,
+	const std::function<void(mrpt::poses::CPose2D& odometry, size_t scans)>& rewrite)
+{
+	auto pipeline = std::make_unique<CMappingPipeline>(common::loadConfigWithOverrides(kDefaultIni, overrides));
+	io::CRawlogReader reader(rawlog);
+	size_t scans = 0;
+	for (io::TRawlogEntry e; reader.next(e);)
+	{
+		if (e.observation && IS_CLASS(*e.observation, mrpt::obs::CObservation2DRangeScan)) ++scans;
+		if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(e.observation))
+			rewrite(odo->odometry, scans);
+		pipeline->processEntry(e);
+	}
+	pipeline->finish();
+	return pipeline;
 }
 }  // namespace hslam::slam::testing

@@ -99,17 +99,13 @@ namespace
 double onlineAteWithNoisyOdometry(const std::string& logDir, const std::string& name, double turnStdPerRad,
 								  unsigned seed, const std::vector<std::string>& overrides)
 {
-	slam::CMappingPipeline pipeline(common::loadConfigWithOverrides(slam::testing::kDefaultIni, overrides));
-	io::CRawlogReader reader(logDir + "/" + name + ".rawlog");
 	std::mt19937 rng(seed);
 	std::normal_distribution<double> unit(0.0, 1.0);
 	std::optional<mrpt::poses::CPose2D> previousRaw;
 	mrpt::poses::CPose2D noisy;
-	for (io::TRawlogEntry e; reader.next(e);)
-	{
-		if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(e.observation))
-		{
-			const mrpt::poses::CPose2D raw = odo->odometry;
+	const auto pipeline = slam::testing::runWithRewrittenOdometry(
+		logDir + "/" + name + ".rawlog", overrides, [&](mrpt::poses::CPose2D& odometry, size_t) {
+			const mrpt::poses::CPose2D raw = odometry;
 			if (previousRaw)
 			{
 				const mrpt::poses::CPose2D step = raw - *previousRaw;
@@ -120,15 +116,11 @@ double onlineAteWithNoisyOdometry(const std::string& logDir, const std::string& 
 			else
 				noisy = raw;
 			previousRaw = raw;
-			odo->odometry = noisy;
-		}
-		pipeline.processEntry(e);
-	}
-	pipeline.finish();
-	return eval::evaluateTrajectory(common::readTumFile(logDir + "/" + name + ".tum"), pipeline.trajectory(), {})
+			odometry = noisy;
+		});
+	return eval::evaluateTrajectory(common::readTumFile(logDir + "/" + name + ".tum"), pipeline->trajectory(), {})
 		.ate.position_m.rmse;
 }
-
 }  // namespace
 
 TEST_F(CsailLog, OdometryNoisierThanItsModelIsNotFollowed)

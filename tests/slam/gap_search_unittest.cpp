@@ -106,7 +106,8 @@ TEST(GapSearch, AfterAPoorMatchWithOdometryTheHeadingWindowIsWide)
 	const mrpt::poses::CPose2D first(2, 1.5, mrpt::DEG2RAD(40)), second(2.9, 2.0, mrpt::DEG2RAD(92));
 	const mrpt::poses::CPose2D truth = second - first;
 	const mrpt::poses::CPose2D odometry(truth.x(), truth.y(), truth.phi() - mrpt::DEG2RAD(40.0));
-	const auto found = search.search(scanFrom(first, 3), scanFrom(second, 4), odometry, *window, true);
+	const auto found = search.search(scanFrom(first, 3), scanFrom(second, 4), odometry, *window,
+									   slam::ESearchKind::after_poor_match);
 	ASSERT_TRUE(found.has_value());
 	EXPECT_LT(found->distanceTo(truth), 0.15) << found->asString();
 	EXPECT_LT(std::abs(mrpt::math::wrapToPi(found->phi() - truth.phi())), mrpt::DEG2RAD(2.0));

@@ -140,27 +140,18 @@ namespace
 std::pair<double, double> ateWithFrozenOdometry(const std::string& logDir, size_t first, size_t last,
 												 bool standstillSeed)
 {
-	const auto cfg = common::loadConfigWithOverrides(
-		kDefaultIni, {std::string("pose_estimation.standstill_seed_after_gap=") + (standstillSeed ? "true" : "false")});
-	slam::CMappingPipeline pipeline(cfg);
-	io::CRawlogReader reader(logDir + "/aces.rawlog");
-	size_t scans = 0;
 	std::optional<mrpt::poses::CPose2D> frozen;
-	for (io::TRawlogEntry e; reader.next(e);)
-	{
-		if (e.observation && IS_CLASS(*e.observation, mrpt::obs::CObservation2DRangeScan)) ++scans;
-		auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(e.observation);
-		if (odo && scans >= first && scans <= last)
-		{
-			if (!frozen) frozen = first == 0 ? mrpt::poses::CPose2D() : odo->odometry;
-			odo->odometry = *frozen;
-		}
-		pipeline.processEntry(e);
-	}
-	pipeline.finish();
+	const auto pipeline = slam::testing::runWithRewrittenOdometry(
+		logDir + "/aces.rawlog",
+		{std::string("pose_estimation.standstill_seed_after_gap=") + (standstillSeed ? "true" : "false")},
+		[&](mrpt::poses::CPose2D& odometry, size_t scans) {
+			if (scans < first || scans > last) return;
+			if (!frozen) frozen = first == 0 ? mrpt::poses::CPose2D() : odometry;
+			odometry = *frozen;
+		});
 	const auto reference = common::readTumFile(logDir + "/aces.tum");
-	return {eval::evaluateTrajectory(reference, pipeline.trajectory(), {}).ate.position_m.rmse,
-			eval::evaluateTrajectory(reference, pipeline.finalTrajectory(), {}).ate.position_m.rmse};
+	return {eval::evaluateTrajectory(reference, pipeline->trajectory(), {}).ate.position_m.rmse,
+			eval::evaluateTrajectory(reference, pipeline->finalTrajectory(), {}).ate.position_m.rmse};
 }
 }  // namespace
 

@@ -21,15 +21,21 @@ graph::TPointCloud2D toCloud(const mrpt::maps::CSimplePointsMap& map)
 }
 }  // namespace
 
-std::optional<graph::TSearchWindow> CGapSearch::windowFor(const Eigen::Matrix3d& motionCov) const
+graph::TSearchWindow CGapSearch::cappedWindow(const Eigen::Matrix3d& motionCov) const
 {
-	if (!m_options.enabled) return std::nullopt;
 	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(motionCov.topLeftCorner<2, 2>());
 	const double xyStd_m = std::sqrt(std::max(0.0, eig.eigenvalues().maxCoeff()));
 	const double yawStd_rad = std::sqrt(std::max(0.0, motionCov(2, 2)));
 	graph::TSearchWindow w;
 	w.xy_m = std::min(m_options.max_window_xy_m, m_options.window_sigmas * xyStd_m);
 	w.yaw_rad = std::min(m_options.max_window_yaw_rad, m_options.window_sigmas * yawStd_rad);
+	return w;
+}
+
+std::optional<graph::TSearchWindow> CGapSearch::windowFor(const Eigen::Matrix3d& motionCov) const
+{
+	if (!m_options.enabled) return std::nullopt;
+	const graph::TSearchWindow w = cappedWindow(motionCov);
 	if (w.xy_m <= m_options.min_window_xy_m && w.yaw_rad <= m_options.min_window_yaw_rad) return std::nullopt;
 	return w;
 }
@@ -37,11 +43,7 @@ std::optional<graph::TSearchWindow> CGapSearch::windowFor(const Eigen::Matrix3d&
 std::optional<graph::TSearchWindow> CGapSearch::slipWindowFor(const Eigen::Matrix3d& motionCov) const
 {
 	if (!m_options.enabled || !m_options.after_poor_match) return std::nullopt;
-	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(motionCov.topLeftCorner<2, 2>());
-	const double xyStd_m = std::sqrt(std::max(0.0, eig.eigenvalues().maxCoeff()));
-	graph::TSearchWindow w;
-	w.xy_m = std::min(m_options.max_window_xy_m, m_options.window_sigmas * xyStd_m);
-	w.yaw_rad = std::min(m_options.max_window_yaw_rad, m_options.window_sigmas * std::sqrt(motionCov(2, 2)));
+	graph::TSearchWindow w = cappedWindow(motionCov);
 	w.yaw_rad = std::max(w.yaw_rad, m_options.slip_min_yaw_rad);
 	return w;
 }
@@ -49,13 +51,14 @@ std::optional<graph::TSearchWindow> CGapSearch::slipWindowFor(const Eigen::Matri
 std::optional<mrpt::poses::CPose2D> CGapSearch::search(const mrpt::maps::CSimplePointsMap& previous,
 														const mrpt::maps::CSimplePointsMap& scan,
 														const mrpt::poses::CPose2D& guess,
-														const graph::TSearchWindow& window, bool slip) const
+														const graph::TSearchWindow& window, ESearchKind kind) const
 {
 	graph::TCorrelativeMatcherOptions o;
 	o.resolution_m = m_options.resolution_m;
 	o.kernel_sigma_m = m_options.kernel_sigma_m;
 	o.min_score = m_options.min_score;
-	o.max_query_range_m = slip ? m_options.slip_max_range_m : m_options.max_range_m;  // both scans lie in their scanner's frame: one range rule
+	// both scans lie in their scanner's frame: one range rule
+	o.max_query_range_m = kind == ESearchKind::after_poor_match ? m_options.slip_max_range_m : m_options.max_range_m;
 	graph::CCorrelativeScanMatcher matcher(o);
 	const graph::TPointCloud2D reference = matcher.filteredQuery(toCloud(previous));
 	if (reference.size() < 10) return std::nullopt;

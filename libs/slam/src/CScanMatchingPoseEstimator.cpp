@@ -409,8 +409,8 @@ std::optional<mrpt::poses::CPose2D> CScanMatchingPoseEstimator::wideSearchSeed(c
 	if (!window) return std::nullopt;
 	common::CStageTimer::CScope t(m_timer, "gap_search");
 	const mrpt::poses::CPose2D clonePose = toPose(m_ukf.clonePose());
-	const auto relative =
-		m_gapSearch.search(m_previousFrame->pointsMap, frame.pointsMap, currentPose() - clonePose, *window, !m_gapSinceMatch);
+	const auto relative = m_gapSearch.search(m_previousFrame->pointsMap, frame.pointsMap, currentPose() - clonePose, *window,
+											 m_gapSinceMatch ? ESearchKind::after_gap : ESearchKind::after_poor_match);
 	if (!relative) return std::nullopt;
 	return clonePose + *relative;
 }

@@ -86,6 +86,13 @@ struct TGapSearchOptions
 	}
 };
 
+/** What a search follows: its points are cut at max_range_m or slip_max_range_m. */
+enum class ESearchKind
+{
+	after_gap,
+	after_poor_match
+};
+
 class CGapSearch
 {
    public:
@@ -103,12 +110,16 @@ class CGapSearch
 	/** Pose of the current scan (robot-frame points `scan`) relative to the
 	 * previous one (robot-frame points `previous`), best in `window` around
 	 * `guess` (the predicted relative motion); nullopt if nothing scores
-	 * min_score. `slip`: points cut at slip_max_range_m, not max_range_m. */
+	 * min_score. */
 	std::optional<mrpt::poses::CPose2D> search(const mrpt::maps::CSimplePointsMap& previous,
 											   const mrpt::maps::CSimplePointsMap& scan, const mrpt::poses::CPose2D& guess,
-											   const graph::TSearchWindow& window, bool slip = false) const;
+											   const graph::TSearchWindow& window,
+											   ESearchKind kind = ESearchKind::after_gap) const;
 
    private:
+	/** Half-widths of window_sigmas standard deviations of `motionCov`, capped. */
+	graph::TSearchWindow cappedWindow(const Eigen::Matrix3d& motionCov) const;
+
 	TGapSearchOptions m_options;
 };
 
