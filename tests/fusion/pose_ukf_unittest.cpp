@@ -193,3 +193,30 @@ TEST(PoseUKF, InflatedPredictionPassesTheGateAndKeepsTheCloneCorrelation)
 	// The clone moved with the correlation: P_cc / P_c = 0.02 / 0.04 of the correction.
 	EXPECT_NEAR(ukf.clonePose()[0], 0.3 * 0.02 / 0.05, 1e-6);
 }
+
+TEST(PoseUKF, HeadingNoiseWiderThanTheCircleIsKeptAtTheUniformCirclesVariance)
+{
+	// Hand-derived: heading noise within the circle adds exactly (the heading
+	// is linear in it); a noise of 245 deg std (a turn rate carried 8 s
+	// without odometry) is scaled to leave the predicted heading variance at
+	// the uniform circle's, pi^2 / 3 (std 104 deg). Unscaled, its sigma
+	// points (1.5 std from the mean with n = 9, alpha = 0.5) wrapped round
+	// the circle and the predicted heading std came out as 5 deg.
+	const double pStd = 1.0 * M_PI / 180, smallStd = 30.0 * M_PI / 180, hugeStd = 245.0 * M_PI / 180;
+	CPoseUKF ukf;
+	ukf.reset(TPoseVec::Zero(), diag(0.05, pStd));
+	ukf.cloneCurrentPose();
+	ukf.predict(TPoseVec::Zero(), diag(0.1, smallStd));
+	EXPECT_NEAR(ukf.covariance()(2, 2), pStd * pStd + smallStd * smallStd, 1e-9);
+	ukf.reset(TPoseVec::Zero(), diag(0.05, pStd));
+	ukf.cloneCurrentPose();
+	ukf.predict(TPoseVec::Zero(), diag(0.1, hugeStd));
+	EXPECT_NEAR(ukf.covariance()(2, 2), CPoseUKF::kUniformCircleHeadingVariance, 1e-9);
+	EXPECT_NEAR(ukf.pose()[2], 0.0, 1e-9);
+	// a match 160 deg round now passes the gate: NIS = 2.79^2 / (3.29 + R)
+	const double off = 160.0 * M_PI / 180;
+	const Eigen::Matrix3d R = diag(0.05, 2.0 * M_PI / 180);
+	const double nis = ukf.absoluteNis(TPoseVec(0, 0, off), R);
+	EXPECT_NEAR(nis, off * off / (CPoseUKF::kUniformCircleHeadingVariance + R(2, 2)), 0.05);
+	EXPECT_TRUE(ukf.updateAbsolute(TPoseVec(0, 0, off), R, 50).accepted);
+}

@@ -115,3 +115,31 @@ TEST(GapSearch, AfterAPoorMatchWithOdometryTheHeadingWindowIsWide)
 	off.after_poor_match = false;
 	EXPECT_FALSE(slam::CGapSearch(off).slipWindowFor(model).has_value());
 }
+
+TEST(GapSearch, APriorThatHoldsNoHeadingIsSearchedRoundTheWholeCircle)
+{
+	// A turn rate carried 8 s without odometry (intel laser only, t = 947 s):
+	// heading std 245 deg, the robot 140 deg from the prediction. 3 x 60 deg
+	// reaches 180: the whole circle; 3 x 50 deg does not: capped at 60.
+	slam::CGapSearch search;
+	const auto cov = [](double yawStd_deg)
+	{ return Eigen::Matrix3d(Eigen::Vector3d(1.0, 1.0, std::pow(mrpt::DEG2RAD(yawStd_deg), 2)).asDiagonal()); };
+	EXPECT_NEAR(search.windowFor(cov(50.0))->yaw_rad, mrpt::DEG2RAD(60.0), 1e-12);
+	EXPECT_NEAR(search.windowFor(cov(60.0))->yaw_rad, M_PI, 1e-12);
+	const auto window = search.windowFor(cov(245.0));
+	ASSERT_TRUE(window.has_value());
+	EXPECT_NEAR(window->yaw_rad, M_PI, 1e-12);
+	const mrpt::poses::CPose2D first(2, 1.5, mrpt::DEG2RAD(40)), second(2.3, 1.7, mrpt::DEG2RAD(70));
+	const mrpt::poses::CPose2D truth = second - first;
+	const mrpt::poses::CPose2D predicted(truth.x(), truth.y(), truth.phi() + mrpt::DEG2RAD(140.0));
+	const auto found = search.search(scanFrom(first, 5), scanFrom(second, 6), predicted, *window);
+	ASSERT_TRUE(found.has_value());
+	EXPECT_LT(found->distanceTo(truth), 0.15) << found->asString();
+	EXPECT_LT(std::abs(mrpt::math::wrapToPi(found->phi() - truth.phi())), mrpt::DEG2RAD(2.0));
+	slam::TGapSearchOptions off;
+	off.whole_circle_if_heading_unknown = false;
+	EXPECT_NEAR(slam::CGapSearch(off).windowFor(cov(245.0))->yaw_rad, mrpt::DEG2RAD(60.0), 1e-12);
+	const auto capped = slam::CGapSearch(off).search(scanFrom(first, 5), scanFrom(second, 6), predicted,
+													 *slam::CGapSearch(off).windowFor(cov(245.0)));
+	EXPECT_TRUE(!capped || std::abs(mrpt::math::wrapToPi(capped->phi() - truth.phi())) > mrpt::DEG2RAD(30.0));
+}

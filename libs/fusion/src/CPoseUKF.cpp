@@ -4,6 +4,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -45,6 +46,7 @@ void CPoseUKF::predict(const TPoseVec& increment, const Eigen::Matrix3d& increme
 	Eigen::MatrixXd augCov = Eigen::MatrixXd::Zero(n + 3, n + 3);
 	augCov.topLeftCorner(n, n) = m_P;
 	augCov.bottomRightCorner<3, 3>() = incrementCov;
+	capHeadingNoise(augCov, n);
 	const auto sigma = makeSigmaPoints(augMean, augCov, {m_options.alpha, m_options.beta, m_options.kappa});
 	const auto motion = [&](const Eigen::VectorXd& a) -> Eigen::VectorXd {
 		Eigen::VectorXd next = a.head(n);
@@ -61,6 +63,24 @@ void CPoseUKF::predict(const TPoseVec& increment, const Eigen::Matrix3d& increme
 	m_x = t.mean;
 	m_P = t.cov;
 	keepPositiveDefinite();
+}
+
+void CPoseUKF::capHeadingNoise(Eigen::MatrixXd& augCov, Eigen::Index n) const
+{
+	// A heading std beyond the uniform circle's (pi / sqrt(3), 104 deg) says
+	// nothing more, and the sigma points, sqrt(n + lambda) std apart (1.5
+	// with the defaults), wrap round the circle and fold back onto the mean:
+	// intel without odometry, t = 947 s, the constant-velocity prior's 245 deg
+	// (8 s since the last scan) came out of the transform as 7 deg, and the
+	// filter refused the right match at NIS 477. The noise's heading is scaled
+	// (with its correlations) so that the predicted heading variance stays at
+	// most the uniform circle's.
+	const double room = std::max(0.0, kUniformCircleHeadingVariance - m_P(2, 2));
+	const double noise = augCov(n + 2, n + 2);
+	if (!(noise > room)) return;
+	const double scale = std::sqrt(room / noise);
+	augCov.row(n + 2) *= scale;
+	augCov.col(n + 2) *= scale;
 }
 
 void CPoseUKF::cloneCurrentPose()

@@ -29,6 +29,9 @@ graph::TSearchWindow CGapSearch::cappedWindow(const Eigen::Matrix3d& motionCov) 
 	graph::TSearchWindow w;
 	w.xy_m = std::min(m_options.max_window_xy_m, m_options.window_sigmas * xyStd_m);
 	w.yaw_rad = std::min(m_options.max_window_yaw_rad, m_options.window_sigmas * yawStd_rad);
+	// intel without odometry, t = 947 s: 8 s of a turn rate carried put the
+	// prediction 140 deg off, outside a 60 deg window
+	if (m_options.whole_circle_if_heading_unknown && m_options.window_sigmas * yawStd_rad >= M_PI) w.yaw_rad = M_PI;
 	return w;
 }
 

@@ -191,6 +191,7 @@ void CScanMatchingPoseEstimator::predict(const TOdometryIncrement& increment, co
 		m_gapVelocityMeasured = (!m_gapSinceMatch || m_gapVelocityMeasured) && prior.velocity_measured;
 		m_gapSinceMatch = true;
 		m_stalledSinceMatch = m_stalledSinceMatch || prior.stalled();
+		m_readingsOverruledSinceMatch = m_readingsOverruledSinceMatch || increment.known;
 	}
 	m_sinceMatchCov = fusion::odometryIncrementCovariance(m_odometryNoise, toVec(m_sinceMatch));
 	if (m_gapSinceMatch) m_sinceMatchCov += unknownCov;
@@ -377,8 +378,18 @@ void CScanMatchingPoseEstimator::leaveUnconstrainedAxisToPrior(matching::TPoseMa
 	// centimetres there, the matches held the estimate on the last keyframe
 	// and the velocity measured from those estimates fell to zero
 	// (laser-only building, 8 m scanner: 5.7 m of travel lost in 10 s).
+	// So it is in a log without odometry, its readings never moving
+	// (unconstrained_axis_without_odometry): aces without odometry, t =
+	// 154-178 s, the estimate stood while the robot drove 8 m down a
+	// corridor. Not after lost readings: the velocity is not known at a
+	// log's first scans (aces cut at entry 50: ATE 0.092 -> 0.158 m); nor
+	// for readings that froze after moving (intel frozen at 0.8 of its
+	// scans: 0.17 -> 1.14 m).
 	const double maxFraction = m_options.stalled_unconstrained_max_fraction;
-	if (!m_stalledSinceMatch || maxFraction <= 0) return;
+	const bool withoutOdometry =
+		m_options.unconstrained_axis_without_odometry && m_readingsOverruledSinceMatch && !m_odometryHasMoved;
+	const bool constantVelocity = m_stalledSinceMatch || withoutOdometry;
+	if (!constantVelocity || maxFraction <= 0) return;
 	const auto& geometric = m_icp.options().geometric;
 	const matching::TScanConstraint c = matching::scanTranslationConstraint(
 		pointsTheReferenceHolds(frame.points, match.pose, geometric.max_match_distance_m),
@@ -546,6 +557,9 @@ void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, c
 		if (m_options.seed_refused_matches && refused) addSeedIfNew(seeds, *refused);
 		if (m_options.standstill_seed_after_gap && m_gapSinceMatch && m_ukf.hasClone())
 			addSeedIfNew(seeds, clonePose);
+		// in a log without odometry, also where the velocity's translation alone carries the robot
+		if (m_options.straight_seed_without_odometry && m_gapSinceMatch && !m_odometryHasMoved && m_ukf.hasClone())
+			addSeedIfNew(seeds, clonePose + mrpt::poses::CPose2D(m_sinceMatch.x(), m_sinceMatch.y(), 0));
 		icpMatch = runIcp(frame, scan, seeds, !refused && estimate.motion_prior.empty(), icpResults);
 		searchWiderIfPoor(frame, scan, icpMatch);
 		if (icpMatch) leaveUnconstrainedAxisToPrior(*icpMatch, frame);
@@ -622,7 +636,7 @@ TPoseEstimate CScanMatchingPoseEstimator::update(const TOdometryIncrement& incre
 		m_sinceMatch = mrpt::poses::CPose2D();
 		m_sinceMatchCov.setZero();
 		m_priorCovSinceMatch.setZero();
-		m_gapSinceMatch = false, m_stalledSinceMatch = false;
+		m_gapSinceMatch = false, m_stalledSinceMatch = false, m_readingsOverruledSinceMatch = false;
 	}
 	estimate.pose = currentPose();
 	estimate.covariance = m_ukf.covariance();

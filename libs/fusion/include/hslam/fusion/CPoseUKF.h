@@ -23,6 +23,8 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
+
 namespace hslam::fusion
 {
 struct TUkfUpdateResult
@@ -57,7 +59,9 @@ class CPoseUKF
 	void reset(const TPoseVec& pose, const Eigen::Matrix3d& cov);
 
 	/** Prediction: current <- current (+) (increment + noise), the noise having
-	 * covariance incrementCov in the robot frame (odometry noise model). */
+	 * covariance incrementCov in the robot frame (odometry noise model). The
+	 * predicted heading variance is kept at most the uniform circle's
+	 * (kUniformCircleHeadingVariance): a wider noise is scaled down to it. */
 	void predict(const TPoseVec& increment, const Eigen::Matrix3d& incrementCov);
 
 	/** Scales the current pose's covariance by `factor` (>= 1) and its
@@ -86,7 +90,12 @@ class CPoseUKF
 	Eigen::Matrix3d covariance() const { return m_P.topLeftCorner<3, 3>(); }
 	const TOptions& options() const { return m_options; }
 
+	/** pi^2 / 3: the variance of a heading uniform on the circle, the widest
+	 * the sigma points can carry without wrapping onto the mean. */
+	static constexpr double kUniformCircleHeadingVariance = M_PI * M_PI / 3.0;
+
    private:
+	void capHeadingNoise(Eigen::MatrixXd& augCov, Eigen::Index n) const;
 	template <class Measurement>
 	TUkfUpdateResult update(const TPoseVec& z, const Eigen::Matrix3d& R, double gateNis, Measurement h);
 	void keepPositiveDefinite();

@@ -42,6 +42,10 @@ struct TGapSearchOptions
 	double window_sigmas = 3;  //!< half-width of the window in prior standard deviations
 	double max_window_xy_m = 2;  //!< the window's half-width is capped here (m)...
 	double max_window_yaw_rad = 60.0 * M_PI / 180.0;  //!< ...and here (rad)
+	/** A prior whose window reaches half a turn each way (window_sigmas x its
+	 * heading std >= 180 deg) holds no heading: the whole circle is searched,
+	 * not max_window_yaw_rad. */
+	bool whole_circle_if_heading_unknown = true;
 	/** No search when the window is within both (ICP's basin and its restarts cover it). */
 	double min_window_xy_m = 0.5;
 	double min_window_yaw_rad = 15.0 * M_PI / 180.0;
@@ -71,6 +75,7 @@ struct TGapSearchOptions
 		v.real("window_sigmas", window_sigmas, 0.5, 10.0);
 		v.real("max_window_xy_m", max_window_xy_m, 0.0, 20.0);
 		v.degrees("max_window_yaw_deg", max_window_yaw_rad, 0.0, 180.0);
+		v.flag("whole_circle_if_heading_unknown", whole_circle_if_heading_unknown);
 		v.real("min_window_xy_m", min_window_xy_m, 0.0, 20.0);
 		v.degrees("min_window_yaw_deg", min_window_yaw_rad, 0.0, 180.0);
 		v.real("max_range_m", max_range_m, 1.0, 200.0);

@@ -86,6 +86,10 @@ struct TPoseEstimationOptions
 	 * the ICP match's variance there is made huge. 0 = off. */
 	double stalled_unconstrained_max_fraction = 0.01;
 	double stalled_normal_radius_m = 0.2;
+	/** The same in a log without odometry (readings that never moved,
+	 * counted frozen), not only while readings are stalled; not for lost
+	 * readings (a log's first scans: no velocity yet). */
+	bool unconstrained_axis_without_odometry = true;
 	/** While odometry counts as stalled, an ICP keyframe is also added when
 	 * this long (s) has passed since the last one (0 = by travel only). */
 	double stalled_keyframe_every_s = 1.0;
@@ -119,6 +123,13 @@ struct TPoseEstimationOptions
 	 * last match: the robot may have stopped or turned where the constant
 	 * velocity carries it on. The fit ([icp] seed_fit_sigma_m) decides. */
 	bool standstill_seed_after_gap = true;
+	/** icp and lines+icp: in a log without odometry (readings that never
+	 * moved, counted frozen), ICP is also seeded where the constant
+	 * velocity's translation alone carries the robot from the last match,
+	 * without its turn: a turn rate measured from the matches over one
+	 * interval (a scan per 1-3 s) and carried over the next puts the
+	 * prediction tens of degrees off where the robot drove straight on. */
+	bool straight_seed_without_odometry = true;
 	/** icp and lines+icp with point ICP: an ICP match whose fit ([icp]
 	 * seed_fit_sigma_m) is more than this below the fit of the prediction
 	 * itself is not used (issue 12: a match that fits worse than the
@@ -150,12 +161,14 @@ struct TPoseEstimationOptions
 		v.flag("stalled_point_to_line", stalled_point_to_line);
 		v.real("stalled_unconstrained_max_fraction", stalled_unconstrained_max_fraction, 0.0, 0.5);
 		v.real("stalled_normal_radius_m", stalled_normal_radius_m, 0.01, 10.0);
+		v.flag("unconstrained_axis_without_odometry", unconstrained_axis_without_odometry);
 		v.real("stalled_keyframe_every_s", stalled_keyframe_every_s, 0.0, 1000.0);
 		v.flag("keyframes_after_icp_only", keyframes_after_icp_only);
 		v.real("keyframe_without_icp_spacings", keyframe_without_icp_spacings, 1.0, 1000.0);
 		v.choice("icp_matcher", icp_matcher, {"mrpt", "point_to_line", "mrpt+point_to_line"});
 		v.flag("seed_refused_matches", seed_refused_matches);
 		v.flag("standstill_seed_after_gap", standstill_seed_after_gap);
+		v.flag("straight_seed_without_odometry", straight_seed_without_odometry);
 		v.real("max_fit_loss_vs_prediction", max_fit_loss_vs_prediction, -1.0, 1.0);
 		v.flag("parallel_restarts", parallel_restarts);
 		v.integer("max_match_points", max_match_points, 0, 1000000);

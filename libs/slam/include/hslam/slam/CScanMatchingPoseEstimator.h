@@ -239,6 +239,9 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	bool m_gapVelocityMeasured = false;  //!< every such prior since the last match was velocity_measured
 	double m_lastKeyframe_s = -1e300;  //!< scan time of the last ICP keyframe
 	bool m_stalledSinceMatch = false;  //!< the prior was a stall's constant velocity since the last match
+	/** the prior was a constant velocity standing in for readings that came
+	 * (frozen, jumping, stalled) since the last match, not for lost ones */
+	bool m_readingsOverruledSinceMatch = false;
 	bool m_gapSinceMatch = false;  //!< the prior was not odometry since the last match: match (and ICP) now
 	bool m_odometryHasMoved = false;  //!< some odometry increment so far was not zero
 	double m_lastIcp_s = 0;  //!< time of the last ICP match
