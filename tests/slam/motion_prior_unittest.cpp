@@ -70,6 +70,27 @@ TEST(MotionPrior, ARestartIsNoMotion)
 	EXPECT_NEAR(drive(restarted, true), 0.6, 1e-9);
 }
 
+TEST(MotionPrior, VelocityIsKnownOnceMeasuredAndUnknownAfterARestart)
+{
+	// unconstrained_axis_after_gap leaves a corridor's axis to this velocity
+	// only once it was measured: at a log's first scan, or just after a
+	// restart, it is zero because nothing was measured, not because the
+	// robot stands.
+	CMotionPrior prior;
+	EXPECT_FALSE(prior.velocityKnown());
+	prior.observePose(CPose2D(0, 0, 0), 0.0);
+	EXPECT_FALSE(prior.velocityKnown());  // one pose: no interval yet
+	prior.observePose(CPose2D(0.5, 0, 0), 1.0);
+	EXPECT_TRUE(prior.velocityKnown());
+	EXPECT_NEAR(prior.velocity().x(), 0.5, 1e-9);
+	prior.restarted();
+	EXPECT_FALSE(prior.velocityKnown());
+	prior.observePose(CPose2D(2.0, 0, 0), 2.0);
+	EXPECT_FALSE(prior.velocityKnown());
+	prior.observePose(CPose2D(2.4, 0, 0), 3.0);
+	EXPECT_TRUE(prior.velocityKnown());
+}
+
 TEST(MotionPrior, VelocityNeverExceedsTheRobotsLimits)
 {
 	CMotionPrior::TOptions o;

@@ -38,6 +38,11 @@ Eigen::Vector3d CMotionPrior::possibleVelocity(const mrpt::poses::CPose2D& d, do
 	return v;
 }
 
+bool CMotionPrior::movingTooFastToStop(double dt_s) const
+{
+	return m_options.max_decel_mps2 > 0 && m_lastOdometrySpeed_mps > m_options.max_decel_mps2 * dt_s;
+}
+
 void CMotionPrior::noteZeroRun(const TOdometryIncrement& increment, double dt_s)
 {
 	if (m_zeroIncrements == 0)
@@ -45,8 +50,7 @@ void CMotionPrior::noteZeroRun(const TOdometryIncrement& increment, double dt_s)
 		m_velocityBeforeZeros.reset();
 		m_lastOdometrySpeed_mps = increment.delta.norm() / std::max(dt_s, m_options.min_interval_s);
 	}
-	else if (m_zeroIncrements == 1 && m_options.max_decel_mps2 > 0 &&
-			 m_lastOdometrySpeed_mps > m_options.max_decel_mps2 * dt_s)
+	else if (m_zeroIncrements == 1 && movingTooFastToStop(dt_s))
 	{  // the estimates up to the scan before the first zero
 		m_velocityBeforeZeros = m_velocity;
 		m_poseBeforeZeros = m_lastPose;
@@ -72,8 +76,7 @@ TMotionPrior CMotionPrior::choose(const TOdometryIncrement& increment, double dt
 	if (!increment.known)
 	{
 		// odometry lost while the last reading moved faster than any stop explains
-		if (m_zeroIncrements == 0 && !m_inGap && m_options.max_decel_mps2 > 0 &&
-			m_lastOdometrySpeed_mps > m_options.max_decel_mps2 * dt)
+		if (m_zeroIncrements == 0 && !m_inGap && movingTooFastToStop(dt))
 			m_faultAtSpeed = true;
 		m_inGap = true;
 		m_zeroIncrements = 0;
@@ -199,7 +202,7 @@ void CMotionPrior::restarted()
 	// over 0.4 s as motion, set 2.9 m/s, and where the next matches left the
 	// corridor's axis to the prior the estimate ran 4.8 m ahead in a second.
 	m_poseHistory.clear();
-	m_havePose = false;
+	m_havePose = false, m_velocityKnown = false;
 }
 
 void CMotionPrior::observePose(const mrpt::poses::CPose2D& pose, double t_s)
@@ -224,6 +227,7 @@ void CMotionPrior::observePose(const mrpt::poses::CPose2D& pose, double t_s)
 				m_velocity.z() = v.z();  // the translation comes from matches (measureStalledVelocity)
 			else if (m_measuredVelocity_s != t_s)
 				m_velocity = v;
+			m_velocityKnown = true;
 		}
 		if (m_lastOdometryKnown)
 			m_recent.push_back({t_s, m_lastOdometry.norm(), std::abs(m_lastOdometry.phi()), d.norm(),

@@ -192,6 +192,7 @@ void CScanMatchingPoseEstimator::predict(const TOdometryIncrement& increment, co
 		m_gapSinceMatch = true;
 		m_stalledSinceMatch = m_stalledSinceMatch || prior.stalled();
 		m_readingsOverruledSinceMatch = m_readingsOverruledSinceMatch || increment.known;
+		m_lostReadingsSinceMatch = m_lostReadingsSinceMatch || !increment.known;
 	}
 	m_sinceMatchCov = fusion::odometryIncrementCovariance(m_odometryNoise, toVec(m_sinceMatch));
 	if (m_gapSinceMatch) m_sinceMatchCov += unknownCov;
@@ -384,11 +385,17 @@ void CScanMatchingPoseEstimator::leaveUnconstrainedAxisToPrior(matching::TPoseMa
 	// corridor. Not after lost readings: the velocity is not known at a
 	// log's first scans (aces cut at entry 50: ATE 0.092 -> 0.158 m); nor
 	// for readings that froze after moving (intel frozen at 0.8 of its
-	// scans: 0.17 -> 1.14 m).
+	// scans: 0.17 -> 1.14 m). After lost readings once a velocity was
+	// measured it is (unconstrained_axis_after_gap): the long corridor at a
+	// scan per second, readings lost for 10 s at 1 m/s, stood still through
+	// the fault, the velocity re-measured from its own estimates falling to
+	// zero (max_decel_mps2 could not call the loss "at speed": 1 m/s is
+	// shed in 0.5 s).
 	const double maxFraction = m_options.stalled_unconstrained_max_fraction;
 	const bool withoutOdometry =
 		m_options.unconstrained_axis_without_odometry && m_readingsOverruledSinceMatch && !m_odometryHasMoved;
-	const bool constantVelocity = m_stalledSinceMatch || withoutOdometry;
+	const bool afterGap = m_options.unconstrained_axis_after_gap && m_lostReadingsSinceMatch && m_motion.velocityKnown();
+	const bool constantVelocity = m_stalledSinceMatch || withoutOdometry || afterGap;
 	if (!constantVelocity || maxFraction <= 0) return;
 	const auto& geometric = m_icp.options().geometric;
 	const matching::TScanConstraint c = matching::scanTranslationConstraint(
@@ -637,6 +644,7 @@ TPoseEstimate CScanMatchingPoseEstimator::update(const TOdometryIncrement& incre
 		m_sinceMatchCov.setZero();
 		m_priorCovSinceMatch.setZero();
 		m_gapSinceMatch = false, m_stalledSinceMatch = false, m_readingsOverruledSinceMatch = false;
+		m_lostReadingsSinceMatch = false;
 	}
 	estimate.pose = currentPose();
 	estimate.covariance = m_ukf.covariance();

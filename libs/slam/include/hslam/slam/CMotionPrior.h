@@ -189,6 +189,8 @@ class CMotionPrior
 	bool refusingMatches() const { return m_rejectedInARow >= m_options.rejected_matches_for_stall; }
 	/** Robot-frame velocity (m/s, m/s, rad/s) of the recent estimates. */
 	Eigen::Vector3d velocity() const { return m_velocity; }
+	/** Whether velocity() was measured from estimates since the start or the last restart. */
+	bool velocityKnown() const { return m_velocityKnown; }
 
    private:
 	TMotionPrior constantVelocity(double dt_s, const std::string& reason) const;
@@ -199,6 +201,9 @@ class CMotionPrior
 	/** The prior once zeros that began at speed are declared frozen (max_decel_mps2). */
 	TMotionPrior frozenAtSpeed(double dt_s, double t_s);
 	bool isJump(const mrpt::poses::CPose2D& delta, double dt_s) const;
+	/** Whether the last moving reading was at a speed no stop within dt_s
+	 * explains (max_decel_mps2). */
+	bool movingTooFastToStop(double dt_s) const;
 	/** Whether the intervals within disagreement_window_s before t_s say
 	 * that odometry is stalled (file comment). */
 	bool odometryStalled(double t_s) const;
@@ -237,6 +242,7 @@ class CMotionPrior
 	mrpt::poses::CPose2D m_poseBeforeZeros;  //!< the estimate at the scan before those zeros...
 	double m_poseBeforeZeros_s = 0;  //!< ...and its time
 	double m_lastOdometrySpeed_mps = 0;  //!< of the latest non-zero increment
+	bool m_velocityKnown = false;  //!< m_velocity was measured from estimates (velocityKnown())
 	bool m_faultAtSpeed = false;  //!< the current fault began at speed (velocity_measured; the velocity is held)
 	bool m_inGap = false;  //!< the latest increment was unknown
 	double m_lastScan_s = 0, m_lastPose_s = 0;

@@ -90,6 +90,10 @@ struct TPoseEstimationOptions
 	 * counted frozen), not only while readings are stalled; not for lost
 	 * readings (a log's first scans: no velocity yet). */
 	bool unconstrained_axis_without_odometry = true;
+	/** The same after lost readings (not zeros) until the next match, once
+	 * a velocity was measured from the estimates (CMotionPrior::velocityKnown;
+	 * not at a log's first scans). */
+	bool unconstrained_axis_after_gap = true;
 	/** While odometry counts as stalled, an ICP keyframe is also added when
 	 * this long (s) has passed since the last one (0 = by travel only). */
 	double stalled_keyframe_every_s = 1.0;
@@ -162,6 +166,7 @@ struct TPoseEstimationOptions
 		v.real("stalled_unconstrained_max_fraction", stalled_unconstrained_max_fraction, 0.0, 0.5);
 		v.real("stalled_normal_radius_m", stalled_normal_radius_m, 0.01, 10.0);
 		v.flag("unconstrained_axis_without_odometry", unconstrained_axis_without_odometry);
+		v.flag("unconstrained_axis_after_gap", unconstrained_axis_after_gap);
 		v.real("stalled_keyframe_every_s", stalled_keyframe_every_s, 0.0, 1000.0);
 		v.flag("keyframes_after_icp_only", keyframes_after_icp_only);
 		v.real("keyframe_without_icp_spacings", keyframe_without_icp_spacings, 1.0, 1000.0);
