@@ -370,8 +370,7 @@ std::vector<mrpt::math::TPoint2D> CScanMatchingPoseEstimator::pointsTheReference
 	return held;
 }
 
-void CScanMatchingPoseEstimator::leaveUnconstrainedAxisToPrior(matching::TPoseMatch& match,
-																 const matching::TLineScanFrame& frame)
+bool CScanMatchingPoseEstimator::priorHoldsLooseAxes() const
 {
 	// While stalled the constant-velocity prior is all there is along a
 	// direction the scan's surfaces do not constrain (a bare corridor's
@@ -379,24 +378,28 @@ void CScanMatchingPoseEstimator::leaveUnconstrainedAxisToPrior(matching::TPoseMa
 	// centimetres there, the matches held the estimate on the last keyframe
 	// and the velocity measured from those estimates fell to zero
 	// (laser-only building, 8 m scanner: 5.7 m of travel lost in 10 s).
+	if (m_stalledSinceMatch) return true;
 	// So it is in a log without odometry, its readings never moving
 	// (unconstrained_axis_without_odometry): aces without odometry, t =
 	// 154-178 s, the estimate stood while the robot drove 8 m down a
-	// corridor. Not after lost readings: the velocity is not known at a
-	// log's first scans (aces cut at entry 50: ATE 0.092 -> 0.158 m); nor
-	// for readings that froze after moving (intel frozen at 0.8 of its
-	// scans: 0.17 -> 1.14 m). After lost readings once a velocity was
-	// measured it is (unconstrained_axis_after_gap): the long corridor at a
-	// scan per second, readings lost for 10 s at 1 m/s, stood still through
-	// the fault, the velocity re-measured from its own estimates falling to
-	// zero (max_decel_mps2 could not call the loss "at speed": 1 m/s is
-	// shed in 0.5 s).
+	// corridor. Not for readings that froze after moving (intel frozen at
+	// 0.8 of its scans: 0.17 -> 1.14 m).
+	if (m_options.unconstrained_axis_without_odometry && m_readingsOverruledSinceMatch && !m_odometryHasMoved)
+		return true;
+	// And after lost readings (unconstrained_axis_after_gap), once a
+	// velocity was measured: the long corridor at a scan per second,
+	// readings lost for 10 s at 1 m/s (not a loss "at speed" by
+	// max_decel_mps2: 1 m/s is shed in 0.5 s), stood still through the
+	// fault. Not at a log's first scans, where no velocity is known (aces
+	// cut at entry 50: ATE 0.092 -> 0.158 m).
+	return m_options.unconstrained_axis_after_gap && m_lostReadingsSinceMatch && m_motion.velocityKnown();
+}
+
+void CScanMatchingPoseEstimator::leaveUnconstrainedAxisToPrior(matching::TPoseMatch& match,
+																 const matching::TLineScanFrame& frame)
+{
 	const double maxFraction = m_options.stalled_unconstrained_max_fraction;
-	const bool withoutOdometry =
-		m_options.unconstrained_axis_without_odometry && m_readingsOverruledSinceMatch && !m_odometryHasMoved;
-	const bool afterGap = m_options.unconstrained_axis_after_gap && m_lostReadingsSinceMatch && m_motion.velocityKnown();
-	const bool constantVelocity = m_stalledSinceMatch || withoutOdometry || afterGap;
-	if (!constantVelocity || maxFraction <= 0) return;
+	if (maxFraction <= 0 || !priorHoldsLooseAxes()) return;
 	const auto& geometric = m_icp.options().geometric;
 	const matching::TScanConstraint c = matching::scanTranslationConstraint(
 		pointsTheReferenceHolds(frame.points, match.pose, geometric.max_match_distance_m),

@@ -192,6 +192,8 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	/** While stalled: a direction the scan's surfaces leave unconstrained
 	 * gets a huge variance in `match` ([pose_estimation]
 	 * stalled_unconstrained_max_fraction). */
+	/** Whether a direction the scan leaves loose is left to the constant-velocity prior now. */
+	bool priorHoldsLooseAxes() const;
 	void leaveUnconstrainedAxisToPrior(matching::TPoseMatch& match, const matching::TLineScanFrame& frame);
 	/** The points (robot frame) with a reference point within maxDistance_m
 	 * when the robot stands at `pose` (world). */
