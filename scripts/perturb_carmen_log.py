@@ -14,6 +14,8 @@ default 1/3; for noisy, the draw of the noise, an integer, default 7):
   base       the log as it is
   urg        ranges beyond 5.6 m reported as no return (a Hokuyo URG's reach)
   laseronly  every odometry reading zero (encoders not read)
+  creep      every increment 1 % of the log's (readings nearly constant, as
+             odometry in the wrong units would be)
   freeze     odometry readings repeat for ten scans, then resume (a driver that
              stalls, then reports the motion made meanwhile in one step)
   gap        odometry readings missing for ten scans
@@ -28,9 +30,10 @@ import os
 import random
 import sys
 
-VARIANTS = ("base", "urg", "laseronly", "freeze", "gap", "wbias", "curve", "noisy", "thin")
+VARIANTS = ("base", "urg", "laseronly", "creep", "freeze", "gap", "wbias", "curve", "noisy", "thin")
 FAULT_SCANS = 10
 URG_RANGE_M = 5.6
+CREEP_SCALE = 0.01
 
 
 def fail(message):
@@ -84,6 +87,8 @@ class OdometryRewriter:
         distance = math.hypot(forward, lateral)
         if self.variant == "wbias":
             turn *= 1.04
+        elif self.variant == "creep":
+            forward, lateral, turn = CREEP_SCALE * forward, CREEP_SCALE * lateral, CREEP_SCALE * turn
         elif self.variant == "curve":
             turn += 0.02 * distance
         elif self.variant == "noisy":
@@ -128,7 +133,7 @@ def perturb(lines, variant, fraction, seed, path):
         if f and f[0] == "ODOM":
             raw = tuple(floats(f, 1, 3, at(index)))
             pose = raw
-            if variant in ("wbias", "curve", "noisy"):
+            if variant in ("wbias", "curve", "noisy", "creep"):
                 pose = rewrite(*raw)
             elif variant == "laseronly":
                 pose = (0.0, 0.0, 0.0)

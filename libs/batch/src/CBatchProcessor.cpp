@@ -38,6 +38,26 @@ void printOdometryCalibration(const calib::COdometrySelfCalibration& calibration
 		<< (st.distance_applied ? "; distance applied" : "; distance not applied (within the front-end's own bias)")
 		<< (st.heading_applied ? "; heading applied" : "") << "\n";
 }
+/** Odometry found off by a gross factor ([odometry_scale_check]), if any. */
+void printOdometryScaleCheck(const calib::COdometryScaleCheck& check, std::ostream& out)
+{
+	const auto gross = [&](const calib::TOdometryScaleFit& f) {
+		return f.applied || std::abs(std::log(f.median_ratio)) >= std::log(check.options().min_scale_factor);
+	};
+	if (!check.options().enabled || (!gross(check.distance()) && !gross(check.turn()))) return;
+	const auto describe = [&](const char* what, const calib::TOdometryScaleFit& f) {
+		out << f.median_ratio << " x the matched " << what << " (" << f.samples << " samples"
+			<< (f.applied ? "; scale " + std::to_string(f.scale) : "") << ")";
+	};
+	out << "Odometry scale check ([odometry_scale_check]): the readings are ";
+	describe("distance", check.distance());
+	out << " and ";
+	describe("turn", check.turn());
+	out << (!check.applying()			 ? "; not rescaled (both must be judged)"
+			: check.options().rescale ? "; rescaled"
+									  : "; not rescaled ([odometry_scale_check] rescale = false; see docs/pose-estimation.md)")
+		<< "\n";
+}
 /** The odometry time offset in use and its fit ([odometry_timing]). */
 void printOdometryTiming(const slam::CMappingPipeline& pipeline, std::ostream& out)
 {
@@ -97,21 +117,43 @@ std::unique_ptr<slam::CMappingPipeline> CBatchProcessor::processRawlog(slam::TMa
 {
 	auto pipeline = makePipeline(config);
 	readRawlog(*pipeline, result);
-	if (!pipeline->odometryTiming().second_pass || pipeline->counters().odometry_offset_changes == 0) return pipeline;
-	// floor sample with odometry 0.3 s late: fitted after the first corner,
-	// whose heading error stayed (docs/pose-estimation.md)
-	const double offset_s = pipeline->odometryOffsetInUse_s();
-	m_out << "Odometry time offset fitted during the run: " << offset_s
-		  << " s ([odometry_timing]); second pass from the start with it\n";
+	const auto found = secondPassOverrides(*pipeline);
+	if (found.empty()) return pipeline;
 	auto overrides = m_request.overrides;
-	overrides.push_back("odometry_timing.offset_s=" + std::to_string(offset_s));
-	overrides.push_back("odometry_timing.estimate_offset=false");
+	overrides.insert(overrides.end(), found.begin(), found.end());
 	config = slam::TMappingConfig::fromConfig(m_request.config_file, overrides);
 	result = TBatchResult();
 	pipeline.reset();  // the first pass's memory, before the second's
 	pipeline = makePipeline(config);
 	readRawlog(*pipeline, result);
 	return pipeline;
+}
+
+std::vector<std::string> CBatchProcessor::secondPassOverrides(const slam::CMappingPipeline& pipeline)
+{
+	std::vector<std::string> overrides;
+	if (pipeline.odometryTiming().second_pass && pipeline.counters().odometry_offset_changes > 0)
+	{
+		// floor sample with odometry 0.3 s late: fitted after the first corner,
+		// whose heading error stayed (docs/pose-estimation.md)
+		const double offset_s = pipeline.odometryOffsetInUse_s();
+		m_out << "Odometry time offset fitted during the run: " << offset_s
+			  << " s ([odometry_timing]); second pass from the start with it\n";
+		overrides.push_back("odometry_timing.offset_s=" + std::to_string(offset_s));
+		overrides.push_back("odometry_timing.estimate_offset=false");
+	}
+	const auto& check = pipeline.odometryScaleCheck();
+	if (check.options().rescale && check.options().second_pass && check.applying())
+	{
+		// aces with every reading at 1 %: the scans before the scale was
+		// found had already bent the map (ATE 23.3 m; odometry 19.7)
+		const double distance = check.scaleInUse().x, turn = check.scaleInUse().y;
+		m_out << "Odometry found off by a gross factor ([odometry_scale_check]): second pass from the start with it"
+			  << " rescaled by " << distance << " (distance), " << turn << " (turn)\n";
+		overrides.push_back("odometry_scale_check.distance_scale=" + std::to_string(distance));
+		overrides.push_back("odometry_scale_check.turn_scale=" + std::to_string(turn));
+	}
+	return overrides;
 }
 
 void CBatchProcessor::readRawlog(slam::CMappingPipeline& pipeline, TBatchResult& result)
@@ -188,6 +230,7 @@ void CBatchProcessor::printSummary(const slam::CMappingPipeline& pipeline, const
 	m_out << "Tiles:            " << pipeline.grid().tileCount() << " (" << pipeline.grid().memoryBytes() / 1024
 		  << " KiB)\n";
 	printMatchSummary(pipeline);
+	printOdometryScaleCheck(pipeline.odometryScaleCheck(), m_out);
 	printOdometryCalibration(pipeline.odometryCalibration(), m_out);
 	printOdometryTiming(pipeline, m_out);
 	if (pipeline.loopClosureStage())

@@ -125,6 +125,9 @@ TRunSummary summarizeRun(const slam::CMappingPipeline& pipeline, const TBatchReq
 	s.odometry_heading_scale = pipeline.odometryCalibration().state().heading_scale;
 	s.odometry_curvature_deg_per_m = pipeline.odometryCalibration().state().curvature_bias_rad_per_m * 180.0 / M_PI;
 	s.odometry_heading_applied = pipeline.odometryCalibration().state().heading_applied;
+	const auto& gross = pipeline.odometryScaleCheck();
+	s.odometry_gross_distance_scale = gross.distance().scale, s.odometry_gross_turn_scale = gross.turn().scale;
+	s.odometry_gross_scale_applied = gross.applying();
 	s.odometry_time_offset_s = pipeline.odometryOffsetInUse_s();
 	if (const auto fit = pipeline.odometryTimeOffset().estimate(s.odometry_time_offset_s))
 		s.odometry_time_offset_fit_s = fit->offset_s;
@@ -165,6 +168,9 @@ std::string runSummaryToJson(const TRunSummary& s)
 		{"odometry_heading_scale", jsonNumber(s.odometry_heading_scale, "%.5f")},
 		{"odometry_curvature_deg_per_m", jsonNumber(s.odometry_curvature_deg_per_m, "%.4f")},
 		{"odometry_heading_applied", s.odometry_heading_applied ? "true" : "false"},
+		{"odometry_gross_distance_scale", jsonNumber(s.odometry_gross_distance_scale, "%.4g")},
+		{"odometry_gross_turn_scale", jsonNumber(s.odometry_gross_turn_scale, "%.4g")},
+		{"odometry_gross_scale_applied", s.odometry_gross_scale_applied ? "true" : "false"},
 		{"odometry_time_offset_s", jsonNumber(s.odometry_time_offset_s, "%.3f")},
 		{"odometry_time_offset_fit_s",
 		 s.odometry_time_offset_fit_s ? jsonNumber(*s.odometry_time_offset_fit_s, "%.3f") : "null"},

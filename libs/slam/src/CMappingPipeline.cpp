@@ -29,7 +29,8 @@ common::TTimedPose2D timedPose(const mrpt::obs::CObservation& obs, const mrpt::p
 std::vector<std::string> CMappingPipeline::sections()
 {
 	std::vector<std::string> s{"process", "grid", "laser_model", "pose_estimation", "dynamic_objects",
-							   "sonar_model", "tbf", "vision", "odometry_correction", "odometry_timing", "odometry_self_calibration",
+							   "sonar_model", "tbf", "vision", "odometry_correction", "odometry_timing", "odometry_scale_check",
+							   "odometry_self_calibration",
 							   "graph", "loop_closure"};
 	for (const auto& e : CScanMatchingPoseEstimator::sections()) s.push_back(e);
 	for (const auto& e : CLocalMapPoseEstimator::sections())
@@ -71,7 +72,8 @@ CMappingPipeline::CMappingPipeline(const mrpt::config::CConfigFileBase& cfg)
 	  m_odometry(common::loadedOptions<calib::TOdometryCorrection>(cfg, "odometry_correction"),
 				 common::loadedOptions<TOdometryTiming>(cfg, "odometry_timing")),
 	  m_timeOffset(m_odometry.timing().estimation),
-	  m_odometryCalibration(common::loadedOptions<calib::TOdometrySelfCalibration>(cfg, "odometry_self_calibration"),
+	  m_odometryCalibration(common::loadedOptions<calib::TOdometryScaleCheck>(cfg, "odometry_scale_check"),
+							common::loadedOptions<calib::TOdometrySelfCalibration>(cfg, "odometry_self_calibration"),
 							m_odometry.correction().nominal_wheelbase_m),
 	  m_loopOptions(common::loadedOptions<TLoopClosureStageOptions>(cfg, "loop_closure")),
 	  m_graphOptions(common::loadedOptions<graph::TGraphBackendOptions>(cfg, "graph"))
@@ -95,6 +97,7 @@ void CMappingPipeline::saveOptions(mrpt::config::CConfigFileBase& out) const
 	common::saveOptions(m_poseOptions, out, "pose_estimation");
 	common::saveOptions(m_odometry.correction(), out, "odometry_correction");
 	common::saveOptions(m_odometry.timing(), out, "odometry_timing");
+	common::saveOptions(m_odometryCalibration.scaleCheck().options(), out, "odometry_scale_check");
 	common::saveOptions(m_odometryCalibration.calibration().options(), out, "odometry_self_calibration");
 	if (m_localMapDefaults) m_localMapDefaults->saveOptions(out);  // sections of the other front-end
 	m_estimator->saveOptions(out);

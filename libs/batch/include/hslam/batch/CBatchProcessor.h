@@ -62,6 +62,10 @@ class CBatchProcessor
 	 * the first pass fitted, if it fitted one (the turns before the fit
 	 * was clear are read right too). */
 	std::unique_ptr<slam::CMappingPipeline> processRawlog(slam::TMappingConfig& config, TBatchResult& result);
+	/** INI overrides of a second pass from the start, with what the first
+	 * found ([odometry_timing] offset, [odometry_scale_check] scales); none:
+	 * the first pass stands. */
+	std::vector<std::string> secondPassOverrides(const slam::CMappingPipeline& pipeline);
 	void readRawlog(slam::CMappingPipeline& pipeline, TBatchResult& result);
 	void evaluate(const slam::CMappingPipeline& pipeline, TBatchResult& result);
 	/** Scan-pair misfit of the reference and the final trajectory

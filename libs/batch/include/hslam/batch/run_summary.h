@@ -54,6 +54,9 @@ struct TRunSummary
 	double odometry_heading_scale = 1;  //!< fitted heading scale (1 / Eb); 1 unless estimate_heading
 	double odometry_curvature_deg_per_m = 0;  //!< fitted heading gained per metre (Ed); 0 unless estimate_heading
 	bool odometry_heading_applied = false;  //!< the heading terms corrected the odometry
+	/** [odometry_scale_check]: the gross scales found (1: none) and whether they are applied. */
+	double odometry_gross_distance_scale = 1, odometry_gross_turn_scale = 1;
+	bool odometry_gross_scale_applied = false;
 	double odometry_time_offset_s = 0;  //!< [odometry_timing] offset in use at the end
 	std::optional<double> odometry_time_offset_fit_s;  //!< its fit (none before a pair was scored)
 	double wall_s = 0;

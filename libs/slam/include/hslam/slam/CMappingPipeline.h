@@ -132,6 +132,7 @@ class CMappingPipeline
 	/** finish() rebuilt the grid from the optimised graph. */
 	bool mapRerendered() const { return m_mapRerendered; }
 	const calib::COdometrySelfCalibration& odometryCalibration() const { return m_odometryCalibration.calibration(); }
+	const calib::COdometryScaleCheck& odometryScaleCheck() const { return m_odometryCalibration.scaleCheck(); }
 	/** [odometry_timing]: the offset's fit so far, and the offset in use (s). */
 	const calib::COdometryTimeOffset& odometryTimeOffset() const { return m_timeOffset; }
 	double odometryOffsetInUse_s() const { return m_odometry.timing().offset_s; }
