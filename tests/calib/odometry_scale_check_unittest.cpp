@@ -21,12 +21,7 @@ void drive(COdometryScaleCheck& check, int n, double distanceK, double turnK)
 	for (int i = 0; i < n; ++i)
 		check.observe(CPose2D(distanceK * 0.5, 0, turnK * 20 * kDeg), CPose2D(0.5, 0, 20 * kDeg));
 }
-TOdometryScaleCheck rescaling()
-{
-	TOdometryScaleCheck o;
-	o.rescale = true;
-	return o;
-}
+TOdometryScaleCheck rescaling() { return TOdometryScaleCheck(); }  // rescale is the default
 }  // namespace
 
 TEST(OdometryScaleCheck, ReadingsAtOnePercentAreRescaledByAHundredOnceBothAreJudged)
@@ -80,6 +75,7 @@ TEST(OdometryScaleCheck, ShortIntervalsAreJoinedAndFoundScalesOnlyReportedUnless
 	// 5 Hz: intervals of 0.1 m and 4 deg make a sample every third one (two
 	// turning ones span a chord of 0.1998 m, under 0.2; three turn 12 deg)
 	TOdometryScaleCheck reportOnly;
+	reportOnly.rescale = false;
 	COdometryScaleCheck check(reportOnly);
 	for (int i = 0; i < 60; ++i) check.observe(CPose2D(0.001, 0, 0.04 * kDeg), CPose2D(0.1, 0, 4 * kDeg));
 	EXPECT_EQ(check.distance().samples, 20u);
@@ -88,4 +84,22 @@ TEST(OdometryScaleCheck, ShortIntervalsAreJoinedAndFoundScalesOnlyReportedUnless
 	EXPECT_NEAR(check.correct(CPose2D(0.001, 0, 0)).x(), 0.001, 1e-12);  // rescale = false: reported only
 	reportOnly.distance_scale = 100, reportOnly.turn_scale = 100;  // a known units error
 	EXPECT_NEAR(COdometryScaleCheck(reportOnly).correct(CPose2D(0.001, 0, 0.001)).phi(), 0.1, 1e-12);
+}
+
+TEST(OdometryScaleCheck, ReadingsTooCoarseOnceRescaledAreOnlyReported)
+{
+	// ARCOS units (4096 per turn) creeping at 1 %: rescaled by 100 the
+	// readings would turn in 8.8 deg steps
+	COdometryScaleCheck coarse(rescaling());
+	coarse.noteIncrement(CPose2D(0.001, 0, 2 * M_PI / 4096));
+	drive(coarse, 10, 0.01, 0.01);
+	EXPECT_TRUE(coarse.distance().applied);
+	EXPECT_TRUE(coarse.turn().applied);
+	EXPECT_FALSE(coarse.applying());
+	EXPECT_NEAR(coarse.correct(CPose2D(0.001, 0, 0)).x(), 0.001, 1e-12);
+	// the same in microradians (a CARMEN log's six decimals): fine enough
+	COdometryScaleCheck fine(rescaling());
+	fine.noteIncrement(CPose2D(1e-6, 0, 1e-6));
+	drive(fine, 10, 0.01, 0.01);
+	EXPECT_TRUE(fine.applying());
 }

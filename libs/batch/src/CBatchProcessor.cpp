@@ -53,9 +53,10 @@ void printOdometryScaleCheck(const calib::COdometryScaleCheck& check, std::ostre
 	describe("distance", check.distance());
 	out << " and ";
 	describe("turn", check.turn());
-	out << (!check.applying()			 ? "; not rescaled (both must be judged)"
+	out << "; the readings' finest turn " << check.turnStep_rad() * 180.0 / M_PI << " deg"
+		<< (!check.applying()		   ? "; not rescaled (both quantities must be judged, and fine enough once rescaled)"
 			: check.options().rescale ? "; rescaled"
-									  : "; not rescaled ([odometry_scale_check] rescale = false; see docs/pose-estimation.md)")
+									  : "; not rescaled ([odometry_scale_check] rescale = false)")
 		<< "\n";
 }
 /** The odometry time offset in use and its fit ([odometry_timing]). */

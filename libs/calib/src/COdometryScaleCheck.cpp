@@ -74,7 +74,18 @@ bool COdometryScaleCheck::applying() const
 	// rescaled distance with turns still at 1 % drove the estimate straight
 	// past every corner (simulated floor at a scan per second: 7.0 -> 41 m).
 	const size_t n = static_cast<size_t>(m_opts.min_samples);
-	return (m_distance.applied || m_turn.applied) && m_distance.samples >= n && m_turn.samples >= n;
+	if (!(m_distance.applied || m_turn.applied) || m_distance.samples < n || m_turn.samples < n) return false;
+	// Readings too coarse once rescaled: the laser-only sample's readings
+	// creep at 1 % in ARCOS units (4096 per turn); rescaled by 100 they turn
+	// in 8.8 deg steps, and trusted as odometry took the run from 0.05 to
+	// 0.32 m
+	return !m_turn.applied || m_turn.scale * m_turnStep_rad <= m_opts.max_rescaled_turn_step_rad;
+}
+
+void COdometryScaleCheck::noteIncrement(const mrpt::poses::CPose2D& increment)
+{
+	const double turn = std::abs(mrpt::math::wrapToPi(increment.phi()));
+	if (turn > 0 && (m_turnStep_rad == 0 || turn < m_turnStep_rad)) m_turnStep_rad = turn;
 }
 
 mrpt::math::TPoint2D COdometryScaleCheck::scaleInUse() const

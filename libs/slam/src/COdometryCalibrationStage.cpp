@@ -13,7 +13,7 @@ void COdometryCalibrationStage::observe(const TOdometryIncrement& uncorrected, c
 {
 	if (!m_calibration.enabled() && !m_scaleCheck.options().enabled) return;
 	if (uncorrected.known)
-		m_reportedSinceMatch = m_reportedSinceMatch + uncorrected.delta;
+		m_reportedSinceMatch = m_reportedSinceMatch + uncorrected.delta, m_scaleCheck.noteIncrement(uncorrected.delta);
 	else
 		m_knownSinceMatch = false;
 	if (!uncorrected.known || !estimate.motion_prior.empty())

@@ -51,7 +51,13 @@ struct TOdometryScaleCheck
 	double consistent_within_factor = 2.0;  //!< a sample agrees within this factor of the median
 	double min_consistent_fraction = 0.6;  //!< share of samples that must agree
 	/** Apply the scales found (else only report them). */
-	bool rescale = false;
+	bool rescale = true;
+	/** Rescaled readings are only as fine as their units: the readings'
+	 * finest turn (the smallest non-zero turn of an increment), times the
+	 * turn scale, must be at most this, or the scales are only reported.
+	 * (The finest distance says nothing: on smooth readings it is the
+	 * slowest step driven, not a unit.) */
+	double max_rescaled_turn_step_rad = 0.5 * M_PI / 180.0;
 	/** Scales known before the run (a known units error, or the batch job's
 	 * second pass), applied from the first reading until the check finds its own. */
 	double distance_scale = 1.0, turn_scale = 1.0;
@@ -71,6 +77,7 @@ struct TOdometryScaleCheck
 		v.real("consistent_within_factor", consistent_within_factor, 1.01, 100.0);
 		v.real("min_consistent_fraction", min_consistent_fraction, 0.0, 1.0);
 		v.flag("rescale", rescale);
+		v.degrees("max_rescaled_turn_step_deg", max_rescaled_turn_step_rad, 0.0, 180.0);
 		v.real("distance_scale", distance_scale, 1e-9, 1e9);
 		v.real("turn_scale", turn_scale, 1e-9, 1e9);
 		v.flag("second_pass", second_pass);
@@ -95,11 +102,16 @@ class COdometryScaleCheck
 	/** An interval between two accepted good matches: the odometry's
 	 * increment as reported and the matched one (robot frame at its start). */
 	void observe(const mrpt::poses::CPose2D& odometry, const mrpt::poses::CPose2D& matched);
+	/** Every known increment as reported (its finest turn: max_rescaled_turn_step_rad). */
+	void noteIncrement(const mrpt::poses::CPose2D& increment);
+	/** The smallest non-zero turn (rad) of an increment so far (0: none). */
+	double turnStep_rad() const { return m_turnStep_rad; }
 	/** `increment` with the applied scales (unchanged until one is applied). */
 	mrpt::poses::CPose2D correct(const mrpt::poses::CPose2D& increment) const;
 
 	/** Whether the check found a scale that correct() applies with rescale
-	 * on: both quantities were judged (the known scales of the options aside). */
+	 * on: both quantities were judged, and the rescaled readings are fine
+	 * enough (the known scales of the options aside). */
 	bool applying() const;
 	/** The distance (x) and turn (y) scales correct() applies now. */
 	mrpt::math::TPoint2D scaleInUse() const;
@@ -125,6 +137,7 @@ class COdometryScaleCheck
 
 	TOdometryScaleCheck m_opts;
 	TJoined m_forDistance, m_forTurn;
+	double m_turnStep_rad = 0;
 	TOdometryScaleFit m_distance, m_turn;
 	std::vector<TSample> m_distanceSamples, m_turnSamples;
 };
