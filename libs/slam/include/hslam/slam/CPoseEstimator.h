@@ -87,8 +87,8 @@ struct TPoseEstimationOptions
 	double stalled_unconstrained_max_fraction = 0.01;
 	double stalled_normal_radius_m = 0.2;
 	/** The same in a log without odometry (readings that never moved,
-	 * counted frozen), not only while readings are stalled; not for lost
-	 * readings (a log's first scans: no velocity yet). */
+	 * counted frozen), not only while readings are stalled; lost readings
+	 * are unconstrained_axis_after_gap's. */
 	bool unconstrained_axis_without_odometry = true;
 	/** The same after lost readings (not zeros) until the next match, once
 	 * a velocity was measured from the estimates (CMotionPrior::velocityKnown;

@@ -189,11 +189,13 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 						   std::optional<matching::TPoseMatch>& icpMatch);
 	/** The wide search's pose of `frame` (world), if any (CGapSearch). */
 	std::optional<mrpt::poses::CPose2D> wideSearchSeed(const matching::TLineScanFrame& frame);
-	/** While stalled: a direction the scan's surfaces leave unconstrained
-	 * gets a huge variance in `match` ([pose_estimation]
-	 * stalled_unconstrained_max_fraction). */
-	/** Whether a direction the scan leaves loose is left to the constant-velocity prior now. */
+	/** Whether a direction the scan leaves loose is left to the
+	 * constant-velocity prior now: while stalled, in a log without
+	 * odometry, after lost readings once a velocity is known. */
 	bool priorHoldsLooseAxes() const;
+	/** Then a direction the scan's surfaces leave unconstrained gets a huge
+	 * variance in `match` ([pose_estimation]
+	 * stalled_unconstrained_max_fraction). */
 	void leaveUnconstrainedAxisToPrior(matching::TPoseMatch& match, const matching::TLineScanFrame& frame);
 	/** The points (robot frame) with a reference point within maxDistance_m
 	 * when the robot stands at `pose` (world). */
