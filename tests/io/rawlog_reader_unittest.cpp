@@ -318,3 +318,31 @@ TEST(RawlogReader, ADamagedNamespaceDoesNotEscapeTheSizeChecks)
 	EXPECT_NE(r.problems[0].message.find("beam count 2147483647"), std::string::npos) << r.problems[0].message;
 	EXPECT_LT(peakRss_kB() - rssBefore_kB, 200 * 1024);
 }
+
+TEST(RawlogReader, AClassNamePaddedWithNulsDoesNotEscapeTheSizeChecks)
+{
+	// MRPT makes a C string of the stored class name, so
+	// "mrpt::obs::CObservationRange" followed by three NULs (a header length
+	// of 31) still reads as the range observation; a fuzzer made MRPT grow a
+	// deque of 16.8 M sensors this way, past the 2 GB limit.
+	hslam::testing::CTempDir tmp;
+	mrpt::obs::CObservationRange sonar;
+	sonar.sensorLabel = "SONAR";
+	sonar.sensedData.resize(8);
+	TBytes bytes = serialize(sonar);
+	const size_t nameLength = std::strlen("mrpt::obs::CObservationRange");
+	ASSERT_EQ(bytes[0], 0x80u | nameLength);
+	bytes.insert(bytes.begin() + 1 + static_cast<long>(nameLength), 3, 0);
+	bytes[0] = static_cast<uint8_t>(0x80u | (nameLength + 3));
+	const size_t versionAt = 1 + nameLength + 3;
+	putU32(bytes, versionAt + 1 + 12, 0x01010100u);  // 16.8 M sensors
+	auto objs = scanObjects(3);
+	objs.insert(objs.begin() + 1, bytes);
+	writeFile(tmp.file("nuls.rawlog"), objs, false);
+	const long rssBefore_kB = peakRss_kB();
+	const auto r = readAll(tmp.file("nuls.rawlog"));
+	EXPECT_EQ(r.stamps, (std::vector<double>{1000, 1001, 1002}));
+	ASSERT_EQ(r.problems.size(), 1u);
+	EXPECT_NE(r.problems[0].message.find("range sensor count 16843008"), std::string::npos) << r.problems[0].message;
+	EXPECT_LT(peakRss_kB() - rssBefore_kB, 200 * 1024);
+}
