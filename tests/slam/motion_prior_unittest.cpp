@@ -390,3 +390,75 @@ TEST(MotionPrior, WhileStalledTheSpeedComesFromMatchesASecondApart)
 	for (size_t k = 11; k < baseline.size(); ++k) EXPECT_LT(baseline[k], 1.0) << "at " << 0.2 * (k + 1) << " s";
 	EXPECT_NEAR(baseline.back(), 0.8, 1e-9);  // matches from 2.4 s to 3.6 s
 }
+
+TEST(MotionPrior, ATurnAloneIsNoStallWhileTheReadingsShowTheDistance)
+{
+	// csail with curving, biased or noisy odometry, scans 25-27 (1 s apart):
+	// the readings turned -5, 7 and 1 deg where the scans turned -46, 10 and
+	// 17 over the same 0.4, 0.9 and 0.7 m. The readings are alive (their
+	// distance is right); only their turn lags. The old rule called it a
+	// stall at scan 28, whose recovery put the scan 3.2 m and 118 deg off.
+	// Readings whose heading stopped changing, and a robot turning in place
+	// on readings that do not turn, still make one.
+	const auto reasonAtLastScan = [](double turnOnlyRatio, double distanceScale, double turnScale)
+	{
+		CMotionPrior::TOptions o;
+		o.turn_only_disagreement_ratio = turnOnlyRatio;
+		CMotionPrior prior(o);
+		const double odometry_m[] = {0.43, 0.92, 0.71, 0.49}, odometry_deg[] = {-5.4, 6.7, 1.0, -20.0};
+		const double estimate_m[] = {0.38, 0.94, 0.74}, estimate_deg[] = {-45.8, 10.2, 16.8};
+		CPose2D pose;
+		prior.observePose(pose, 24.0);
+		std::string reason;
+		for (int k = 0; k < 4; ++k)
+		{
+			const double t = 25.0 + k;
+			reason = prior.prior(odometry(distanceScale * odometry_m[k], 0, turnScale * odometry_deg[k] * kDeg), t).reason;
+			if (k < 3) pose = pose + CPose2D(distanceScale * estimate_m[k], 0, estimate_deg[k] * kDeg);
+			prior.observePose(pose, t);
+		}
+		return reason;
+	};
+	EXPECT_EQ(reasonAtLastScan(0.1, 1.0, 1.0), "");
+	EXPECT_EQ(reasonAtLastScan(0.25, 1.0, 1.0), "stalled");  // the old rule: disagreement_ratio
+	// a heading that stopped changing (readings turn 1 % of those turns)
+	EXPECT_EQ(reasonAtLastScan(0.1, 1.0, 0.01 * 73 / 13), "stalled");
+	// the same turns made in place (0.1 % of the distance: below
+	// disagreement_min_motion_m, so the distance cannot refute the stall)
+	EXPECT_EQ(reasonAtLastScan(0.1, 0.001, 1.0), "stalled");
+}
+
+TEST(MotionPrior, ZerosAfterMotionAreUnknownMotionUntilTheyCountAsFrozen)
+{
+	// A scan a second at 0.8 m/s, then readings that stop changing: a stop
+	// within the interval is possible at max_decel_mps2 (2 m/s^2), so the
+	// zeros are no fault "at speed", but they may be motion: a
+	// constant-velocity prior carrying the velocity before them, until
+	// frozen_min_scans. A robot that crept (1 cm/s) before them has stopped.
+	const auto reasons = [](double speed_mps, bool unknown)
+	{
+		CMotionPrior::TOptions o;
+		o.zeros_after_motion_unknown = unknown;
+		CMotionPrior prior(o);
+		std::vector<std::string> out;
+		std::vector<double> deltas;
+		double x = 0;
+		for (int k = 1; k <= 8; ++k)
+		{
+			const double t = k;
+			const TMotionPrior p = prior.prior(odometry(k <= 4 ? speed_mps : 0.0, 0, 0), t);
+			out.push_back(p.reason), deltas.push_back(p.delta.x());
+			x += k <= 4 ? speed_mps : p.delta.x();
+			prior.observePose(CPose2D(x, 0, 0), t);
+		}
+		return std::make_pair(out, deltas);
+	};
+	const auto [moving, movingDeltas] = reasons(0.8, true);
+	EXPECT_EQ(moving[3], "");
+	EXPECT_EQ(moving[4], "zeros");  // the first zero
+	EXPECT_NEAR(movingDeltas[4], 0.8, 1e-9);
+	EXPECT_EQ(moving[5], "zeros");
+	EXPECT_EQ(moving[6], "frozen");  // frozen_min_scans = 3
+	EXPECT_EQ(reasons(0.8, false).first[4], "");  // followed as a stop
+	EXPECT_EQ(reasons(0.01, true).first[4], "");  // crept: 1 cm in the interval, below creep_min_motion_m
+}

@@ -43,19 +43,26 @@ bool CMotionPrior::movingTooFastToStop(double dt_s) const
 	return m_options.max_decel_mps2 > 0 && m_lastOdometrySpeed_mps > m_options.max_decel_mps2 * dt_s;
 }
 
+bool CMotionPrior::zerosFollowMotion() const
+{
+	// the readings' own speed before them: zeros between the steps of
+	// readings that creep (1 mm in ARCOS units now and then) are no motion
+	return m_zeroIncrements > 0 && m_lastOdometrySpeed_mps * m_zeroRun_s >= m_options.creep_min_motion_m;
+}
+
 void CMotionPrior::noteZeroRun(const TOdometryIncrement& increment, double dt_s)
 {
 	if (m_zeroIncrements == 0)
 	{
 		m_velocityBeforeZeros.reset();
 		m_lastOdometrySpeed_mps = increment.delta.norm() / std::max(dt_s, m_options.min_interval_s);
+		return;
 	}
-	else if (m_zeroIncrements == 1 && movingTooFastToStop(dt_s))
-	{  // the estimates up to the scan before the first zero
-		m_velocityBeforeZeros = m_velocity;
-		m_poseBeforeZeros = m_lastPose;
-		m_poseBeforeZeros_s = m_lastPose_s;
-	}
+	m_zeroRun_s = m_zeroIncrements == 1 ? dt_s : m_zeroRun_s + dt_s;  // a gap may have cut the run
+	if (m_zeroIncrements != 1 || !movingTooFastToStop(dt_s)) return;
+	m_velocityBeforeZeros = m_velocity;  // of the estimates up to the scan before the first zero
+	m_poseBeforeZeros = m_lastPose;
+	m_poseBeforeZeros_s = m_lastPose_s;
 }
 
 TMotionPrior CMotionPrior::prior(const TOdometryIncrement& increment, double t_s)
@@ -86,14 +93,25 @@ TMotionPrior CMotionPrior::choose(const TOdometryIncrement& increment, double dt
 	const bool zero = increment.delta.norm() == 0 && increment.delta.phi() == 0;
 	m_zeroIncrements = zero ? m_zeroIncrements + 1 : 0;
 	noteZeroRun(increment, dt);
-	if (m_zeroIncrements >= m_options.frozen_min_scans)
-		return m_velocityBeforeZeros ? frozenAtSpeed(dt, t_s) : constantVelocity(dt, "frozen");
+	if (m_zeroIncrements > 0)
+		if (const auto p = zerosPrior(dt, t_s)) return *p;
 	m_faultAtSpeed = false;  // a jump or a stall: what the velocity says is in doubt
 	if (isJump(increment.delta, dt)) return constantVelocity(dt, "jump");
 	m_stalled = odometryStalled(t_s);
 	if (m_stalled) return constantVelocity(dt, TMotionPrior::kStalled);
 	TMotionPrior p;
 	p.delta = increment.delta;
+	return p;
+}
+
+std::optional<TMotionPrior> CMotionPrior::zerosPrior(double dt_s, double t_s)
+{
+	const bool frozen = m_zeroIncrements >= m_options.frozen_min_scans, afterMotion = zerosFollowMotion();
+	if (!frozen && !(afterMotion && m_velocityKnown && m_options.zeros_after_motion_unknown)) return std::nullopt;
+	TMotionPrior p = !frozen				 ? constantVelocity(dt_s, "zeros")
+					 : m_velocityBeforeZeros ? frozenAtSpeed(dt_s, t_s)
+											 : constantVelocity(dt_s, "frozen");
+	p.froze_after_motion = afterMotion;
 	return p;
 }
 
@@ -122,7 +140,9 @@ bool CMotionPrior::odometryStalled(double t_s) const
 	const double k = m_options.disagreement_ratio;
 	const bool moved = est_m >= m_options.disagreement_min_motion_m,
 			   turned = est_rad >= m_options.disagreement_min_rotation_rad;
-	if ((moved && odo_m < k * est_m) || (turned && odo_rad < k * est_rad) ||
+	const bool distanceAgrees = moved && odo_m >= k * est_m;
+	const double turnRatio = distanceAgrees ? std::min(k, m_options.turn_only_disagreement_ratio) : k;
+	if ((moved && odo_m < k * est_m) || (turned && odo_rad < turnRatio * est_rad) ||
 		(m_options.stall_needs_creeping ? m_rejectedCreepingInARow : m_rejectedInARow) >=
 			m_options.rejected_matches_for_stall)
 		return true;

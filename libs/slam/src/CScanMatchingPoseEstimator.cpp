@@ -193,6 +193,7 @@ void CScanMatchingPoseEstimator::predict(const TOdometryIncrement& increment, co
 		m_stalledSinceMatch = m_stalledSinceMatch || prior.stalled();
 		m_readingsOverruledSinceMatch = m_readingsOverruledSinceMatch || increment.known;
 		m_lostReadingsSinceMatch = m_lostReadingsSinceMatch || !increment.known;
+		m_frozenReadingsSinceMatch = m_frozenReadingsSinceMatch || (increment.known && prior.froze_after_motion);
 	}
 	m_sinceMatchCov = fusion::odometryIncrementCovariance(m_odometryNoise, toVec(m_sinceMatch));
 	if (m_gapSinceMatch) m_sinceMatchCov += unknownCov;
@@ -392,7 +393,12 @@ bool CScanMatchingPoseEstimator::priorHoldsLooseAxes() const
 	// max_decel_mps2: 1 m/s is shed in 0.5 s), stood still through the
 	// fault. Not at a log's first scans, where no velocity is known (aces
 	// cut at entry 50: ATE 0.092 -> 0.158 m).
-	return m_options.unconstrained_axis_after_gap && m_lostReadingsSinceMatch && m_motion.velocityKnown();
+	if (m_options.unconstrained_axis_after_gap && m_lostReadingsSinceMatch && m_motion.velocityKnown()) return true;
+	// And after readings that froze after motion (unconstrained_axis_after_freeze):
+	// the same corridor with the readings frozen for 10 s, 3.70 m. Not
+	// for a log's first readings at rest (froze_after_motion): the
+	// corridor with creeping readings then never started down the axis.
+	return m_options.unconstrained_axis_after_freeze && m_frozenReadingsSinceMatch && m_motion.velocityKnown();
 }
 
 void CScanMatchingPoseEstimator::leaveUnconstrainedAxisToPrior(matching::TPoseMatch& match,
@@ -647,7 +653,7 @@ TPoseEstimate CScanMatchingPoseEstimator::update(const TOdometryIncrement& incre
 		m_sinceMatchCov.setZero();
 		m_priorCovSinceMatch.setZero();
 		m_gapSinceMatch = false, m_stalledSinceMatch = false, m_readingsOverruledSinceMatch = false;
-		m_lostReadingsSinceMatch = false;
+		m_lostReadingsSinceMatch = false, m_frozenReadingsSinceMatch = false;
 	}
 	estimate.pose = currentPose();
 	estimate.covariance = m_ukf.covariance();

@@ -3,6 +3,9 @@
  *
  * Odometry is trusted only while it behaves like odometry:
  *  - unknown  (a gap marker, no odometry at all): constant-velocity prior;
+ *  - zeros    (exact zeros after readings that moved, before they count
+ *             as frozen: zeros_after_motion_unknown): the same prior, the
+ *             scans deciding between a stop and a fault;
  *  - frozen   (frozen_min_scans consecutive increments of exactly zero,
  *             i.e. wheel readings that stopped changing: a stalled driver or
  *             a log without odometry but with constant readings): the robot
@@ -61,7 +64,7 @@ struct TMotionPrior
 		odometry,
 		constant_velocity
 	} source = ESource::odometry;
-	std::string reason;  //!< "", "gap", "frozen", kStalled, "jump"
+	std::string reason;  //!< "", "gap", "frozen", "zeros", kStalled, "jump"
 	static constexpr const char* kStalled = "stalled";
 	/** Odometry was judged stalled (readings that creep): a constant-velocity prior. */
 	bool stalled() const { return reason == kStalled; }
@@ -71,6 +74,10 @@ struct TMotionPrior
 	 * robot still moves at that velocity; matching need not measure a
 	 * direction the scan leaves loose. */
 	bool velocity_measured = false;
+	/** A "zeros" or "frozen" prior for readings that stopped changing after
+	 * they moved (not a log's first readings at rest, not the steps of
+	 * readings that creep): see CMotionPrior::zerosFollowMotion(). */
+	bool froze_after_motion = false;
 };
 
 class CMotionPrior
@@ -96,6 +103,18 @@ class CMotionPrior
 		 * (a corridor where matching no longer sees the motion) and hands the
 		 * estimate back to readings that creep. */
 		bool stall_ends_on_agreement = true;
+		/** Where the distance agrees (the estimate moved
+		 * disagreement_min_motion_m within the window and the readings at
+		 * least disagreement_ratio of it), a stall judged by rotation alone
+		 * needs the readings' turn below this fraction of the estimate's:
+		 * the readings are alive, and a turn that lags or is noisy (a
+		 * fifth of the scans' at csail's fast turns) is matching's to
+		 * correct, while a heading that stopped changing reports next to
+		 * nothing. At disagreement_ratio (the old rule), csail's scans
+		 * 25-27 (readings turned 13 deg where the scans turned 73, over
+		 * the same 2.1 m) declared a stall whose recovery search put scan
+		 * 28 3.2 m and 118 deg off. */
+		double turn_only_disagreement_ratio = 0.1;
 		double measured_max_std_m = 0.1;  //!< see observeMatch()
 		int rejected_matches_for_stall = 3;  //!< see file comment ("stalled")
 		/** Rejected matches count towards a stall only where odometry did
@@ -116,6 +135,21 @@ class CMotionPrior
 		 * first frozen prior catches up on those scans. Readings that stop
 		 * coming at such a speed keep the velocity the same way. 0 = off. */
 		double max_decel_mps2 = 2.0;
+		/** Exact zeros that follow motion are unknown motion until they
+		 * count as frozen (frozen_min_scans): a constant-velocity prior as
+		 * for lost readings, so the scans decide between moving on and a
+		 * stop (the standstill seed after a gap, [pose_estimation]
+		 * standstill_seed_after_gap). They follow motion when the last
+		 * moving reading's speed would have carried the robot
+		 * creep_min_motion_m over the zeros so far (the readings' speed,
+		 * not the estimates': zeros between the steps of readings that
+		 * creep are no motion). Zeros faster than any stop explains
+		 * (max_decel_mps2) are such zeros too, and are declared frozen at
+		 * speed at frozen_min_scans as before. false: followed as a stop
+		 * until then; at a scan a second a robot at 0.8 m/s may stop within
+		 * one interval, and three scans stood still before the readings
+		 * counted as frozen (stress matrix slowscan+freeze: floor 2.75 m). */
+		bool zeros_after_motion_unknown = true;
 		/** While stalled, the translation velocity is measured only between
 		 * well-constrained matches at least this far apart (s); the
 		 * estimates between them follow the prior wherever the scan leaves
@@ -140,6 +174,7 @@ class CMotionPrior
 			v.degrees("disagreement_min_rotation_deg", disagreement_min_rotation_rad, 1.0, 3600.0);
 			v.real("disagreement_ratio", disagreement_ratio, 0.0, 1.0);
 			v.flag("stall_ends_on_agreement", stall_ends_on_agreement);
+			v.real("turn_only_disagreement_ratio", turn_only_disagreement_ratio, 0.0, 1.0);
 			v.real("measured_max_std_m", measured_max_std_m, 0.001, 100.0);
 			v.integer("rejected_matches_for_stall", rejected_matches_for_stall, 1, 1000);
 			v.flag("stall_needs_creeping", stall_needs_creeping);
@@ -148,6 +183,7 @@ class CMotionPrior
 			v.real("contradicting_nis", contradicting_nis, 0.0, 1e6);
 			v.real("min_interval_s", min_interval_s, 0.0, 10.0);
 			v.real("max_decel_mps2", max_decel_mps2, 0.0, 100.0);
+			v.flag("zeros_after_motion_unknown", zeros_after_motion_unknown);
 			v.real("stalled_velocity_baseline_s", stalled_velocity_baseline_s, 0.0, 100.0);
 		}
 	};
@@ -198,12 +234,19 @@ class CMotionPrior
 	void noteZeroRun(const TOdometryIncrement& increment, double dt_s);
 	/** prior() without the bookkeeping of velocity_measured. */
 	TMotionPrior choose(const TOdometryIncrement& increment, double dt_s, double t_s);
+	/** The prior for exact zeros: "frozen" from frozen_min_scans, "zeros"
+	 * before that if they follow motion (zeros_after_motion_unknown), else
+	 * nullopt (followed as a stop). */
+	std::optional<TMotionPrior> zerosPrior(double dt_s, double t_s);
 	/** The prior once zeros that began at speed are declared frozen (max_decel_mps2). */
 	TMotionPrior frozenAtSpeed(double dt_s, double t_s);
 	bool isJump(const mrpt::poses::CPose2D& delta, double dt_s) const;
 	/** Whether the last moving reading was at a speed no stop within dt_s
 	 * explains (max_decel_mps2). */
 	bool movingTooFastToStop(double dt_s) const;
+	/** Whether the current zeros follow motion: the last moving reading's
+	 * speed would have carried the robot creep_min_motion_m over them. */
+	bool zerosFollowMotion() const;
 	/** Whether the intervals within disagreement_window_s before t_s say
 	 * that odometry is stalled (file comment). */
 	bool odometryStalled(double t_s) const;
@@ -242,6 +285,7 @@ class CMotionPrior
 	mrpt::poses::CPose2D m_poseBeforeZeros;  //!< the estimate at the scan before those zeros...
 	double m_poseBeforeZeros_s = 0;  //!< ...and its time
 	double m_lastOdometrySpeed_mps = 0;  //!< of the latest non-zero increment
+	double m_zeroRun_s = 0;  //!< time since the latest non-zero increment, while its zeros last
 	bool m_velocityKnown = false;  //!< m_velocity was measured from estimates (velocityKnown())
 	bool m_faultAtSpeed = false;  //!< the current fault began at speed (velocity_measured; the velocity is held)
 	bool m_inGap = false;  //!< the latest increment was unknown

@@ -33,7 +33,7 @@ struct TPoseEstimate
 	bool match_accepted = false;  //!< the UKF fused it (not rejected by the gate)
 	double match_nis = 0;  //!< normalised innovation squared of the fused match
 	features::TLineSegmentList lines;  //!< lines extracted from this scan (robot frame), if any
-	std::string motion_prior;  //!< why the prior was not odometry ("gap", "frozen", "stalled", "jump"), else ""
+	std::string motion_prior;  //!< why the prior was not odometry ("gap", "frozen", "zeros", "stalled", "jump"), else ""
 	long keyframe_id = -1;  //!< id in the estimator's keyframe store if this scan became a keyframe
 };
 
@@ -94,6 +94,13 @@ struct TPoseEstimationOptions
 	 * a velocity was measured from the estimates (CMotionPrior::velocityKnown;
 	 * not at a log's first scans). */
 	bool unconstrained_axis_after_gap = true;
+	/** The same after readings that froze after motion
+	 * (TMotionPrior::froze_after_motion: not a log's first readings at
+	 * rest, not the steps of readings that creep), until the next match,
+	 * once a velocity was measured: the long corridor at a scan per second
+	 * with readings frozen for 10 s stood through the fault as with lost
+	 * readings. */
+	bool unconstrained_axis_after_freeze = true;
 	/** While odometry counts as stalled, an ICP keyframe is also added when
 	 * this long (s) has passed since the last one (0 = by travel only). */
 	double stalled_keyframe_every_s = 1.0;
@@ -167,6 +174,7 @@ struct TPoseEstimationOptions
 		v.real("stalled_normal_radius_m", stalled_normal_radius_m, 0.01, 10.0);
 		v.flag("unconstrained_axis_without_odometry", unconstrained_axis_without_odometry);
 		v.flag("unconstrained_axis_after_gap", unconstrained_axis_after_gap);
+		v.flag("unconstrained_axis_after_freeze", unconstrained_axis_after_freeze);
 		v.real("stalled_keyframe_every_s", stalled_keyframe_every_s, 0.0, 1000.0);
 		v.flag("keyframes_after_icp_only", keyframes_after_icp_only);
 		v.real("keyframe_without_icp_spacings", keyframe_without_icp_spacings, 1.0, 1000.0);
