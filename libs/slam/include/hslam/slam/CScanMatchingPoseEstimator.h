@@ -247,7 +247,7 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	 * (frozen, jumping, stalled) since the last match, not for lost ones */
 	bool m_readingsOverruledSinceMatch = false;
 	bool m_lostReadingsSinceMatch = false;  //!< a prior since the last match stood for lost readings
-	bool m_frozenReadingsSinceMatch = false;  //!< ...for readings frozen after motion ("zeros", "frozen")
+	bool m_frozenReadingsSinceMatch = false;  //!< ...for readings that froze after motion (TMotionPrior::froze_after_motion)
 	bool m_gapSinceMatch = false;  //!< the prior was not odometry since the last match: match (and ICP) now
 	bool m_odometryHasMoved = false;  //!< some odometry increment so far was not zero
 	double m_lastIcp_s = 0;  //!< time of the last ICP match
