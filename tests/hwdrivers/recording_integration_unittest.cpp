@@ -267,10 +267,11 @@ void checkRecording(const std::string& rawlog, const std::string& truthTum, cons
 	EXPECT_NE(infoText.find("ODOMETRY"), std::string::npos) << infoText;
 	EXPECT_NE(infoText.find("LASER"), std::string::npos) << infoText;
 	EXPECT_NE(infoText.find("SONAR"), std::string::npos) << infoText;
-	const std::string outDir = tmp.file("map");
+	const std::string outDir = tmp.file("map"), processLog = tmp.file("process.txt");
 	ASSERT_EQ(hslam::testing::runCommand(std::string(HSLAM_BIN_DIR) + "/hslam-process -q -i '" + rawlog + "' -o '" + outDir +
-										 "' -c " + HSLAM_SOURCE_DIR + "/config_ini/hslam-default.ini > /dev/null 2>&1"),
-			  0);
+										 "' -c " + HSLAM_SOURCE_DIR + "/config_ini/hslam-default.ini > '" + processLog + "' 2>&1"),
+			  0)
+		<< readFile(processLog);
 	EXPECT_GT(fs::file_size(outDir + "/map.png"), 100u);
 }
 

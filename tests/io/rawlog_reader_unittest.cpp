@@ -346,3 +346,34 @@ TEST(RawlogReader, AClassNamePaddedWithNulsDoesNotEscapeTheSizeChecks)
 	EXPECT_NE(r.problems[0].message.find("range sensor count 16843008"), std::string::npos) << r.problems[0].message;
 	EXPECT_LT(peakRss_kB() - rssBefore_kB, 200 * 1024);
 }
+
+TEST(RawlogReader, BytesInsideAFieldThatLookLikeAHeaderAreData)
+{
+	// MRPT reads a header only where an object starts. A recorded rawlog had a
+	// timestamp byte 0xA7 just before the next object's header, which together
+	// looked like a header named "...mrpt::obs::CObservationComment" with an
+	// absurd comment length; the reader refused it and lost the battery
+	// reading around it. Here the same bytes sit inside a comment's text.
+	hslam::testing::CTempDir tmp;
+	const std::string name = "mrpt::obs::CObservationComment";
+	std::string fake(1, static_cast<char>(0x80u | name.size()));
+	fake += name;
+	fake += std::string("\0\xff\xff\xff\x7f", 5);  // version 0, comment length 2 GB
+	mrpt::obs::CObservationComment comment;
+	comment.text = "before " + fake + " after";
+	comment.timestamp = mrpt::Clock::fromDouble(1000.5);
+	auto objs = scanObjects(3);
+	objs.insert(objs.begin() + 1, serialize(comment));
+	writeFile(tmp.file("fake-header.rawlog"), objs, true);
+
+	const auto r = readAll(tmp.file("fake-header.rawlog"));
+	EXPECT_EQ(r.error, "");
+	EXPECT_TRUE(r.problems.empty()) << r.problems.front().message;
+	EXPECT_EQ(r.stamps, (std::vector<double>{1000, 1000.5, 1001, 1002}));
+	CRawlogReader reader(tmp.file("fake-header.rawlog"));
+	TRawlogEntry e;
+	ASSERT_TRUE(reader.next(e) && reader.next(e));
+	const auto read = std::dynamic_pointer_cast<mrpt::obs::CObservationComment>(e.observation);
+	ASSERT_TRUE(read);
+	EXPECT_EQ(read->text, comment.text);
+}

@@ -47,29 +47,20 @@ void CCheckedRawlogArchive::discardConsumed()
 	if (drop < (1u << 20)) return;  // erase in large steps only
 	m_buf.erase(m_buf.begin(), m_buf.begin() + static_cast<std::ptrdiff_t>(drop));
 	m_base = m_pos;
+	m_headerByteAt = NO_HEADER;
 }
 
-void CCheckedRawlogArchive::checkHeadersBefore(uint64_t upTo)
+void CCheckedRawlogArchive::checkHeaderAt(uint64_t h)
 {
-	for (; m_checkedUpTo < upTo; ++m_checkedUpTo)
+	fill(h, 128);
+	if (!startsCheckedHeader(at(h), availableFrom(h))) return;
+	for (;;)
 	{
-		const uint64_t h = m_checkedUpTo;
-		if (!(*at(h) & 0x80)) continue;
-		fill(h, 128);
-		if (!startsCheckedHeader(at(h), availableFrom(h))) continue;
-		for (;;)
-		{
-			const auto r = checkDeclaredSizes(at(h), availableFrom(h), m_fileEnded, m_limits);
-			if (r.result == TDeclaredSizeCheck::EResult::Absurd)
-			{
-				// m_checkedUpTo stays at h: a resync that lands before h meets
-				// (and refuses) this header again.
-				throw declared_size_error("declared size refused before reading (byte " + std::to_string(h) + "): " +
-										  r.message);
-			}
-			if (r.result != TDeclaredSizeCheck::EResult::NeedMoreBytes) break;
-			fill(h, r.bytes_needed);
-		}
+		const auto r = checkDeclaredSizes(at(h), availableFrom(h), m_fileEnded, m_limits);
+		if (r.result == TDeclaredSizeCheck::EResult::Absurd)
+			throw declared_size_error("declared size refused before reading (byte " + std::to_string(h) + "): " + r.message);
+		if (r.result != TDeclaredSizeCheck::EResult::NeedMoreBytes) return;
+		fill(h, r.bytes_needed);
 	}
 }
 
@@ -77,10 +68,18 @@ size_t CCheckedRawlogArchive::read(void* buf, size_t len)
 {
 	fill(m_pos, len);
 	const size_t n = std::min(len, availableFrom(m_pos));
-	// A header is checked once MRPT reads past its first byte (still before
-	// the counts): MRPT turns any exception on that first byte into "end of
-	// file" (CArchive::internal_ReadObjectHeader).
-	if (n > 0) checkHeadersBefore(m_pos + n - 1);
+	// MRPT reads an object header (CArchive::internal_ReadObjectHeader) as one
+	// byte, 0x80 | name length, then the name in one read of that length, then
+	// the version. The header is checked at the name's read, still before the
+	// counts: MRPT turns any exception on the first byte into "end of file".
+	// Only where MRPT reads a header: bytes inside a field that happen to look
+	// like one (a timestamp byte 0xA7 just before the next object's header
+	// formed "...mrpt::obs::CObservationComment" with an absurd "count" in a
+	// recorded rawlog) are data, and MRPT never reads them as a header.
+	const bool readsHeaderName =
+		n > 0 && m_headerByteAt != NO_HEADER && m_headerByteAt + 1 == m_pos && len == (*at(m_headerByteAt) & 0x7Fu);
+	if (readsHeaderName) checkHeaderAt(m_headerByteAt);
+	m_headerByteAt = (len == 1 && n == 1 && (*at(m_pos) & 0x80)) ? m_pos : NO_HEADER;
 	std::memcpy(buf, at(m_pos), n);
 	m_pos += n;
 	return n;  // short read: CArchive throws CExceptionEOF
@@ -108,7 +107,7 @@ bool CCheckedRawlogArchive::seekNextObject(uint64_t from, const std::set<std::st
 		if (classNames.count(name) && mrpt::rtti::findRegisteredClass(name))
 		{
 			m_pos = q;
-			m_checkedUpTo = std::max(m_checkedUpTo, q);
+			m_headerByteAt = NO_HEADER;
 			return true;
 		}
 	}

@@ -4,9 +4,10 @@
  *  - keeps a window of the decompressed bytes, so a failed object can be
  *    skipped by searching the next object header (resynchronisation);
  *  - checks the declared sizes of every object header of a known class
- *    (rawlog_declared_sizes.h), nested ones included, before handing MRPT the
- *    bytes of that header, and throws declared_size_error for an absurd one:
- *    MRPT never sees the count, so it never allocates for it. */
+ *    (rawlog_declared_sizes.h) that MRPT reads, nested ones included, before
+ *    handing MRPT the bytes of that header's name, and throws
+ *    declared_size_error for an absurd one: MRPT never sees the count, so it
+ *    never allocates for it. */
 #pragma once
 
 #include <hslam/io/rawlog_declared_sizes.h>
@@ -50,14 +51,16 @@ class CCheckedRawlogArchive : public mrpt::serialization::CArchive
    private:
 	/** Makes bytes [offset, offset + n) available if the stream has them. */
 	void fill(uint64_t offset, size_t n);
-	/** Checks every known object header starting before `upTo`. */
-	void checkHeadersBefore(uint64_t upTo);
+	/** Checks the declared sizes of the object header at `h` if its class is a checked one. */
+	void checkHeaderAt(uint64_t h);
 	const uint8_t* at(uint64_t offset) const { return m_buf.data() + (offset - m_base); }
 	size_t availableFrom(uint64_t offset) const { return static_cast<size_t>(m_base + m_buf.size() - offset); }
 
 	mrpt::io::CFileGZInputStream& m_file;
 	std::vector<uint8_t> m_buf;  //!< bytes [m_base, m_base + size)
-	uint64_t m_base = 0, m_pos = 0, m_checkedUpTo = 0;
+	static constexpr uint64_t NO_HEADER = ~uint64_t{0};
+	uint64_t m_base = 0, m_pos = 0;
+	uint64_t m_headerByteAt = NO_HEADER;  //!< offset of a 1-byte read of a header's first byte (0x80 | length)
 	bool m_fileEnded = false;
 	std::string m_streamError;
 	TDeclaredSizeLimits m_limits;
