@@ -164,9 +164,9 @@ std::string_view shortName(std::string_view name)
 }
 
 /** The checked class whose header starts `data`. Compared by the name after
- * the last "::" and before any NUL, as MRPT's class lookup resolves names (an old or damaged
- * namespace, "mrpt::ocs::CObservation2DRangeScan" or "CObservation2DRangeScan",
- * still reads as the scan: found by fuzzing). */
+ * the last "::" and before any NUL, as MRPT's class lookup resolves names
+ * (an old or damaged namespace, "mrpt::ocs::CObservation2DRangeScan" or
+ * "CObservation2DRangeScan", still reads as the scan: found by fuzzing). */
 const TCheckedClass* matchHeader(const uint8_t* data, size_t avail)
 {
 	if (avail < 1 || !(data[0] & 0x80)) return nullptr;
