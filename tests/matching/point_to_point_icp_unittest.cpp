@@ -161,6 +161,56 @@ TEST(PointIndex2D, NearestAreExactFarFromTheCloudAndAcrossStrayFarPoints)
 	EXPECT_EQ(none.nearest(0.f, 0.f, 4, idx, d2), 0u);
 }
 
+TEST(PointIndex2D, NearestWithinIsExactUpToItsRadiusAndStopsBeyondTheBound)
+{
+	// The walls of a 10 m room; queries near the walls (ICP's usual case),
+	// inside the room and far outside it, with bounds from 5 cm to 3 m.
+	auto& rng = mrpt::random::getRandomGenerator();
+	rng.randomize(5);
+	std::vector<float> xs, ys;
+	for (int i = 0; i < 800; ++i)
+	{
+		const float t = static_cast<float>(rng.drawUniform(-5, 5));
+		xs.push_back(t), ys.push_back(i % 2 ? 5.f : -5.f);
+		xs.push_back(i % 2 ? 5.f : -5.f), ys.push_back(t);
+	}
+	CPointIndex2D index;
+	index.build(xs, ys);
+	std::vector<size_t> live(xs.size());
+	std::iota(live.begin(), live.end(), 0);
+	size_t stoppedEarly = 0, unbounded = 0;
+	for (int q = 0; q < 400; ++q)
+	{
+		const double span = q < 300 ? 6 : 30;
+		const float x = static_cast<float>(rng.drawUniform(-span, span)), y = static_cast<float>(rng.drawUniform(-span, span));
+		const float max_m = static_cast<float>(rng.drawUniform(0.05, 3.0));
+		uint32_t idx[4];
+		float d2[4], exact_m = 0;
+		const size_t n = index.nearestWithin(x, y, 4, max_m, idx, d2, exact_m);
+		const auto expected = bruteForce(xs, ys, live, x, y, 4);
+		if (std::isinf(exact_m))
+		{
+			++unbounded;  // nearest()'s full answer
+			ASSERT_EQ(n, 4u);
+			for (size_t j = 0; j < 4; ++j) EXPECT_NEAR(d2[j], expected[j], 1e-3f * std::max(1.f, expected[j]));
+			continue;
+		}
+		++stoppedEarly;
+		EXPECT_GE(exact_m, max_m);  // every point within the bound was seen
+		// the true nearest points within exact_m are the first results, in order
+		for (size_t j = 0; j < 4 && expected[j] < exact_m * exact_m * 0.999f; ++j)
+		{
+			ASSERT_LT(j, n) << x << " " << y;
+			EXPECT_NEAR(d2[j], expected[j], 1e-3f * std::max(1.f, expected[j])) << x << " " << y << " rank " << j;
+		}
+		// and nothing found is nearer than the truth
+		for (size_t j = 0; j < n; ++j) EXPECT_GE(d2[j], expected[j] * 0.999f);
+	}
+	// both kinds of answer occur: far queries stop at the bound
+	EXPECT_GT(stoppedEarly, 50u);
+	EXPECT_GT(unbounded, 50u);
+}
+
 TEST(PointToPointIcp, AgreesWithMrptClassicIcp)
 {
 	const auto world = room(0.04);

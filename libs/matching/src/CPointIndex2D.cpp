@@ -95,6 +95,9 @@ void CPointIndex2D::rebuildGrid()
 template <class Result>
 void CPointIndex2D::scanCell(int ix, int iy, float x, float y, Result& result) const
 {
+	const size_t c = static_cast<size_t>(iy) * static_cast<size_t>(m_width) + static_cast<size_t>(ix);
+	const uint32_t begin = m_cellStart[c], end = m_cellStart[c + 1];
+	if (begin == end) return;  // most cells of a ring are empty (walls are thin)
 	if (result.full())  // a cell wholly farther than the k-th point found cannot add one
 	{
 		const float cx0 = m_x0 + static_cast<float>(ix) * m_cell_m, cy0 = m_y0 + static_cast<float>(iy) * m_cell_m;
@@ -102,8 +105,7 @@ void CPointIndex2D::scanCell(int ix, int iy, float x, float y, Result& result) c
 		const float ey = std::max(0.f, std::max(cy0 - y, y - (cy0 + m_cell_m)));
 		if (ex * ex + ey * ey > result.worst()) return;
 	}
-	const size_t c = static_cast<size_t>(iy) * static_cast<size_t>(m_width) + static_cast<size_t>(ix);
-	for (uint32_t s = m_cellStart[c], end = m_cellStart[c + 1]; s < end; ++s)
+	for (uint32_t s = begin; s < end; ++s)
 	{
 		if (m_sortedIndex[s] < m_firstLive) continue;  // retired since the grid was built
 		const float dx = m_sortedX[s] - x, dy = m_sortedY[s] - y;
@@ -113,6 +115,14 @@ void CPointIndex2D::scanCell(int ix, int iy, float x, float y, Result& result) c
 
 size_t CPointIndex2D::nearest(float x, float y, size_t k, uint32_t* indices, float* distances2) const
 {
+	float exact_m = 0;
+	return nearestWithin(x, y, k, std::numeric_limits<float>::infinity(), indices, distances2, exact_m);
+}
+
+size_t CPointIndex2D::nearestWithin(float x, float y, size_t k, float max_m, uint32_t* indices, float* distances2,
+									float& exact_m) const
+{
+	exact_m = std::numeric_limits<float>::infinity();
 	k = std::min<size_t>(k, 32);
 	if (k == 0 || m_width == 0) return 0;
 	CKnnResult result(k, indices, distances2);
@@ -124,26 +134,37 @@ size_t CPointIndex2D::nearest(float x, float y, size_t k, uint32_t* indices, flo
 	const int gapY = cy < 0 ? -cy : std::max(0, cy - (m_height - 1));
 	for (int r = std::max(gapX, gapY);; ++r)
 	{
-		const int x0 = std::max(0, cx - r), x1 = std::min(m_width - 1, cx + r);
-		const int y0 = std::max(0, cy - r), y1 = std::min(m_height - 1, cy + r);
-		for (int iy = y0; iy <= y1; ++iy)
-		{
-			if (iy == cy - r || iy == cy + r)  // a full row of the ring
-				for (int ix = x0; ix <= x1; ++ix) scanCell(ix, iy, x, y, result);
-			else  // only the ring's two side cells
-			{
-				if (cx - r >= 0 && cx - r < m_width) scanCell(cx - r, iy, x, y, result);
-				if (cx + r >= 0 && cx + r < m_width) scanCell(cx + r, iy, x, y, result);
-			}
-		}
+		scanRing(cx, cy, r, x, y, result);
 		if (cx - r <= 0 && cy - r <= 0 && cx + r >= m_width - 1 && cy + r >= m_height - 1) break;  // grid covered
 		// any point outside the (2r + 1)^2 block lies at least this far away
 		const float reach = std::min(std::min(fx - static_cast<float>(cx - r), static_cast<float>(cx + r + 1) - fx),
 									 std::min(fy - static_cast<float>(cy - r), static_cast<float>(cy + r + 1) - fy)) *
 							m_cell_m;
 		if (result.full() && reach > 0 && result.worst() <= reach * reach) break;
+		if (reach >= max_m)  // every point within max_m has been offered
+		{
+			exact_m = reach;
+			break;
+		}
 	}
 	return result.size();
+}
+
+template <class Result>
+void CPointIndex2D::scanRing(int cx, int cy, int r, float x, float y, Result& result) const
+{
+	const int x0 = std::max(0, cx - r), x1 = std::min(m_width - 1, cx + r);
+	const int y0 = std::max(0, cy - r), y1 = std::min(m_height - 1, cy + r);
+	for (int iy = y0; iy <= y1; ++iy)
+	{
+		if (iy == cy - r || iy == cy + r)  // a full row of the ring
+			for (int ix = x0; ix <= x1; ++ix) scanCell(ix, iy, x, y, result);
+		else  // only the ring's two side cells
+		{
+			if (cx - r >= 0 && cx - r < m_width) scanCell(cx - r, iy, x, y, result);
+			if (cx + r >= 0 && cx + r < m_width) scanCell(cx + r, iy, x, y, result);
+		}
+	}
 }
 
 }  // namespace hslam::matching

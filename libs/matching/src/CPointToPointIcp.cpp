@@ -59,10 +59,17 @@ class CNeighbourCache
 		++stats.tree_queries;
 		float dist2[16];
 		const size_t k = std::min<size_t>(m_k, 16);
-		m_count[i] = m_ref.nearest(x, y, k, &m_idx[i * m_k], dist2);
+		// Only points within the pairing limit matter now: the search stops
+		// once they have all been seen, and the cache keeps what is known.
+		float exact_m = 0;
+		m_count[i] = m_ref.nearestWithin(x, y, k, limit_m, &m_idx[i * m_k], dist2, exact_m);
 		m_qx[i] = x, m_qy[i] = y;
-		m_radius[i] = m_count[i] < k ? std::numeric_limits<float>::max() : std::sqrt(dist2[m_count[i] - 1]);
-		m_nearest[i] = m_count[i] > 0 ? std::sqrt(dist2[0]) : std::numeric_limits<float>::max();
+		const float kth_m = m_count[i] < k ? std::numeric_limits<float>::max() : std::sqrt(dist2[m_count[i] - 1]);
+		// every reference point within m_radius of the query is cached
+		m_radius[i] = std::min(kth_m, exact_m);
+		// nothing is nearer than m_nearest (exact when below exact_m)
+		m_nearest[i] = std::min(m_count[i] > 0 ? std::sqrt(dist2[0]) : std::numeric_limits<float>::max(), exact_m);
+		// beyond exact_m (>= limit_m) the point is unpaired whatever d2 says
 		d2 = m_count[i] > 0 ? dist2[0] : std::numeric_limits<float>::max();
 		return m_count[i] > 0 ? m_idx[i * m_k] : 0;
 	}

@@ -22,8 +22,9 @@ struct TMrptReference
 	{
 		map.kdTreeNClosestPoint2DIdx(x, y, k, idx, d2);
 	}
-	/** Squared distance to the nearest reference point. */
-	float nearestDistance2(float x, float y) const
+	/** Squared distance to the nearest reference point (exact; the bound is
+	 * TIndexReference's). */
+	float nearestDistance2(float x, float y, float /*max_m*/) const
 	{
 		float d2 = 0;
 		map.kdTreeClosestPoint2D(x, y, d2);
@@ -44,11 +45,14 @@ struct TIndexReference
 		idx.assign(found, found + n);
 		d2.resize(n);
 	}
-	float nearestDistance2(float x, float y) const
+	/** Squared distance to the nearest reference point when it is below
+	 * max_m, else some value >= max_m^2 (the search stops there). */
+	float nearestDistance2(float x, float y, float max_m) const
 	{
 		uint32_t i = 0;
-		float d2 = 0;
-		return index.nearest(x, y, 1, &i, &d2) ? d2 : 1e30f;
+		float d2 = 0, exact_m = 0;
+		if (index.nearestWithin(x, y, 1, max_m, &i, &d2, exact_m) == 0) return 1e30f;
+		return d2 < exact_m * exact_m ? d2 : std::max(d2, max_m * max_m);
 	}
 	Eigen::Vector2d point(size_t i) const { return {index.x(i), index.y(i)}; }
 };

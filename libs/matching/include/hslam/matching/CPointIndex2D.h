@@ -48,10 +48,23 @@ class CPointIndex2D
 	 * distances, nearest first (equal distances: lower index first). Returns
 	 * how many were found (k unless fewer points are live). */
 	size_t nearest(float x, float y, size_t k, uint32_t* indices, float* distances2) const;
+	/** As nearest(), but the search stops once every live point within
+	 * max_m of (x, y) has been seen. exact_m is set to a radius within which
+	 * the answer is exact: every live point nearer than exact_m is among the
+	 * results, in order (infinity when the search did not stop early, i.e.
+	 * the answer is nearest()'s). exact_m >= max_m when it stopped early;
+	 * results at exact_m or beyond may not be the true nearest. ICP's pairing
+	 * uses it: a point with nothing within its pairing distance is unpaired
+	 * however far its true nearest point is. */
+	size_t nearestWithin(float x, float y, size_t k, float max_m, uint32_t* indices, float* distances2,
+						 float& exact_m) const;
 
    private:
 	void rebuildGrid();
 	/** Offers the live points of cell (ix, iy) to the result. */
+	/** Offers the cells of the square ring of radius r (cells) around (cx, cy). */
+	template <class Result>
+	void scanRing(int cx, int cy, int r, float x, float y, Result& result) const;
 	template <class Result>
 	void scanCell(int ix, int iy, float x, float y, Result& result) const;
 
