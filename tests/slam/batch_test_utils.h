@@ -44,10 +44,11 @@ inline void convertCarmenReferenceLog(const std::string& name, const std::string
 
 /** The pipeline (default INI plus `overrides`) over `rawlog` whose odometry
  * readings pass through `rewrite` first (the reading, and the scans read so
- * far): a robot whose wheels froze, slipped or were never read. Finished. */
+ * far): a robot whose wheels froze, slipped or were never read. With
+ * `skippedScans`, the log starts after that many scans. Finished. */
 inline std::unique_ptr<CMappingPipeline> runWithRewrittenOdometry(
 	const std::string& rawlog, const std::vector<std::string>& overrides,
-	const std::function<void(mrpt::poses::CPose2D& odometry, size_t scans)>& rewrite)
+	const std::function<void(mrpt::poses::CPose2D& odometry, size_t scans)>& rewrite, size_t skippedScans = 0)
 {
 	auto pipeline = std::make_unique<CMappingPipeline>(common::loadConfigWithOverrides(kDefaultIni, overrides));
 	io::CRawlogReader reader(rawlog);
@@ -55,6 +56,7 @@ inline std::unique_ptr<CMappingPipeline> runWithRewrittenOdometry(
 	for (io::TRawlogEntry e; reader.next(e);)
 	{
 		if (e.observation && IS_CLASS(*e.observation, mrpt::obs::CObservation2DRangeScan)) ++scans;
+		if (scans <= skippedScans && skippedScans > 0) continue;  // the log started later
 		if (auto odo = std::dynamic_pointer_cast<mrpt::obs::CObservationOdometry>(e.observation))
 			rewrite(odo->odometry, scans);
 		pipeline->processEntry(e);

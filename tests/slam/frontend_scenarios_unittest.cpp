@@ -333,6 +333,23 @@ TEST(FrontEndScenarios, ReadingsFrozenAtAScanPerSecondAreUnknownMotionUntilDecla
 	EXPECT_LT(moved.ate_m, 0.1 * stood.ate_m);  // measured 0.094 m
 }
 
+TEST(FrontEndScenarios, CreepingReadingsAtAScanPerSecondCountOnlyTheRefusedTracksOwnSeed)
+{
+	// The floor at 1 Hz with readings at 1 % of the motion (the stress
+	// matrix's slowscan+creep): ICP runs from the standstill and straight
+	// seeds too. The result counted as the refused track was the one at the
+	// index where the refused seed would have been, also when there was none
+	// (the standstill seed's result): a wrong refusal, a velocity measured from
+	// a stop, and the estimate stood (10.6 m against odometry's 23.7).
+	hslam::testing::CTempDir dir;
+	const auto folder =
+		simulated("floor", dir, "--set odometry.fault=freeze --set odometry.fault_motion_scale=0.01 --set laser.rate_hz=1");
+	const TScores s = runDefault(folder);
+	print("floor at 1 Hz, readings creeping", s);
+	EXPECT_GT(s.odometry_ate_m, 15.0);  // the class: odometry is useless (23.7 m)
+	EXPECT_LT(s.ate_m, 3.0);  // measured 1.37 m (10.6 m with the wrong index)
+}
+
 TEST(FrontEndScenarios, ReadingsFrozenDownALongCorridorAtAScanPerSecondLeaveTheAxisToThePrior)
 {
 	// As with lost readings at 1 Hz: the scans of the bare corridor hold

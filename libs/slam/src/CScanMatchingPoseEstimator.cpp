@@ -212,12 +212,13 @@ void CScanMatchingPoseEstimator::restartAtRefusedMatches(const TMotionPrior& pri
 		m_ukf.reset(toVec(*refused), prior.covariance), m_motion.restarted();
 }
 
-void CScanMatchingPoseEstimator::addSeedIfNew(std::vector<mrpt::poses::CPose2D>& seeds, const mrpt::poses::CPose2D& seed)
+size_t CScanMatchingPoseEstimator::addSeedIfNew(std::vector<mrpt::poses::CPose2D>& seeds, const mrpt::poses::CPose2D& seed)
 {
-	for (const auto& s : seeds)
-		if (s.distanceTo(seed) <= 0.05 && std::abs(mrpt::math::wrapToPi(s.phi() - seed.phi())) <= 1.0 * M_PI / 180)
-			return;
+	for (size_t i = 0; i < seeds.size(); ++i)
+		if (seeds[i].distanceTo(seed) <= 0.05 && std::abs(mrpt::math::wrapToPi(seeds[i].phi() - seed.phi())) <= 1.0 * M_PI / 180)
+			return i;
 	seeds.push_back(seed);
+	return seeds.size() - 1;
 }
 
 bool CScanMatchingPoseEstimator::betterSeedResult(const matching::TPoseMatch& later,
@@ -568,9 +569,14 @@ void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, c
 		if (lineUsable) seeds.push_back(clonePose + lineMatch->pose);
 		addSeedIfNew(seeds, currentPose());
 		// where the matches the filter keeps refusing put the robot (CMotionPrior)
+		// (its index only when it is a seed of its own: the standstill seed's
+		// result taken for the refused track's was counted as a refusal and
+		// measured the velocity, laser-only aces from entry 250, t = 967 s:
+		// 0.76 -> 0.13 m/s, and the corridor's alias 0.84 m back won next)
 		const auto refused = m_motion.contradictedMatchSeed(m_matchTime_s);
-		const size_t refusedSeed = seeds.size();
-		if (m_options.seed_refused_matches && refused) addSeedIfNew(seeds, *refused);
+		std::optional<size_t> refusedSeed;
+		if (m_options.seed_refused_matches && refused)
+			if (const size_t before = seeds.size(); addSeedIfNew(seeds, *refused) == before) refusedSeed = before;
 		if (m_options.standstill_seed_after_gap && m_gapSinceMatch && m_ukf.hasClone())
 			addSeedIfNew(seeds, clonePose);
 		// in a log without odometry, also where the velocity's translation alone carries the robot
@@ -579,9 +585,9 @@ void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, c
 		icpMatch = runIcp(frame, scan, seeds, !refused && estimate.motion_prior.empty(), icpResults);
 		searchWiderIfPoor(frame, scan, icpMatch);
 		if (icpMatch) leaveUnconstrainedAxisToPrior(*icpMatch, frame);
-		if (icpMatch && refusedSeed < icpResults.size() &&
-			matching::competesWith(*icpMatch, icpResults[refusedSeed], m_icp.options().competing))
-			refusedTrack = &icpResults[refusedSeed];
+		if (icpMatch && refusedSeed && *refusedSeed < icpResults.size() &&
+			matching::competesWith(*icpMatch, icpResults[*refusedSeed], m_icp.options().competing))
+			refusedTrack = &icpResults[*refusedSeed];
 		m_sinceIcp = mrpt::poses::CPose2D();
 		m_lastIcp_s = m_matchTime_s;
 	}
