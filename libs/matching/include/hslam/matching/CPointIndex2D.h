@@ -61,10 +61,10 @@ class CPointIndex2D
 
    private:
 	void rebuildGrid();
-	/** Offers the live points of cell (ix, iy) to the result. */
 	/** Offers the cells of the square ring of radius r (cells) around (cx, cy). */
 	template <class Result>
 	void scanRing(int cx, int cy, int r, float x, float y, Result& result) const;
+	/** Offers the live points of cell (ix, iy) to the result. */
 	template <class Result>
 	void scanCell(int ix, int iy, float x, float y, Result& result) const;
 
