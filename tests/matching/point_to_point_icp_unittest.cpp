@@ -34,6 +34,20 @@ std::vector<float> bruteForce(const std::vector<float>& xs, const std::vector<fl
 	return d2;
 }
 
+/** Points on the four walls of a 10 m square room centred on the origin:
+ * 2 x `pairs` points, uniformly along the walls (what ICP queries). */
+std::pair<std::vector<float>, std::vector<float>> roomWalls(int pairs, mrpt::random::CRandomGenerator& rng)
+{
+	std::vector<float> xs, ys;
+	for (int i = 0; i < pairs; ++i)
+	{
+		const float t = static_cast<float>(rng.drawUniform(-5, 5));
+		xs.push_back(t), ys.push_back(i % 2 ? 5.f : -5.f);
+		xs.push_back(i % 2 ? 5.f : -5.f), ys.push_back(t);
+	}
+	return {xs, ys};
+}
+
 /** MRPT's classic ICP with the same settings as `o`. */
 mrpt::slam::CICP mrptClassicIcp(const CPointToPointIcp::TOptions& o)
 {
@@ -121,13 +135,7 @@ TEST(PointIndex2D, NearestAreExactFarFromTheCloudAndAcrossStrayFarPoints)
 	// then has coarser cells), and queries inside, beside and far outside
 	auto& rng = mrpt::random::getRandomGenerator();
 	rng.randomize(11);
-	std::vector<float> xs, ys;
-	for (int i = 0; i < 400; ++i)
-	{
-		const float t = static_cast<float>(rng.drawUniform(-5, 5));
-		xs.push_back(t), ys.push_back(i % 2 ? 5.f : -5.f);
-		xs.push_back(i % 2 ? 5.f : -5.f), ys.push_back(t);
-	}
+	auto [xs, ys] = roomWalls(400, rng);
 	const std::vector<float> nearX = xs, nearY = ys;
 	for (float far : {500.f, -480.f}) xs.push_back(far), ys.push_back(far * 0.5f);
 	for (const auto& [cloudX, cloudY] : {std::pair{nearX, nearY}, std::pair{xs, ys}})
@@ -167,13 +175,7 @@ TEST(PointIndex2D, NearestWithinIsExactUpToItsRadiusAndStopsBeyondTheBound)
 	// inside the room and far outside it, with bounds from 5 cm to 3 m.
 	auto& rng = mrpt::random::getRandomGenerator();
 	rng.randomize(5);
-	std::vector<float> xs, ys;
-	for (int i = 0; i < 800; ++i)
-	{
-		const float t = static_cast<float>(rng.drawUniform(-5, 5));
-		xs.push_back(t), ys.push_back(i % 2 ? 5.f : -5.f);
-		xs.push_back(i % 2 ? 5.f : -5.f), ys.push_back(t);
-	}
+	const auto [xs, ys] = roomWalls(800, rng);
 	CPointIndex2D index;
 	index.build(xs, ys);
 	std::vector<size_t> live(xs.size());
