@@ -50,9 +50,8 @@ struct TIndexReference
 	float nearestDistance2(float x, float y, float max_m) const
 	{
 		uint32_t i = 0;
-		float d2 = 0, exact_m = 0;
-		if (index.nearestWithin(x, y, 1, max_m, &i, &d2, exact_m) == 0) return 1e30f;
-		return d2 < exact_m * exact_m ? d2 : std::max(d2, max_m * max_m);
+		float d2 = 0, exact_m = 0;  // found beyond exact_m (>= max_m): d2 >= max_m^2 as promised
+		return index.nearestWithin(x, y, 1, max_m, &i, &d2, exact_m) ? d2 : 1e30f;
 	}
 	Eigen::Vector2d point(size_t i) const { return {index.x(i), index.y(i)}; }
 };

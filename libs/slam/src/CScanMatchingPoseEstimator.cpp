@@ -212,13 +212,13 @@ void CScanMatchingPoseEstimator::restartAtRefusedMatches(const TMotionPrior& pri
 		m_ukf.reset(toVec(*refused), prior.covariance), m_motion.restarted();
 }
 
-size_t CScanMatchingPoseEstimator::addSeedIfNew(std::vector<mrpt::poses::CPose2D>& seeds, const mrpt::poses::CPose2D& seed)
+bool CScanMatchingPoseEstimator::addSeedIfNew(std::vector<mrpt::poses::CPose2D>& seeds, const mrpt::poses::CPose2D& seed)
 {
-	for (size_t i = 0; i < seeds.size(); ++i)
-		if (seeds[i].distanceTo(seed) <= 0.05 && std::abs(mrpt::math::wrapToPi(seeds[i].phi() - seed.phi())) <= 1.0 * M_PI / 180)
-			return i;
+	for (const auto& s : seeds)
+		if (s.distanceTo(seed) <= 0.05 && std::abs(mrpt::math::wrapToPi(s.phi() - seed.phi())) <= 1.0 * M_PI / 180)
+			return false;
 	seeds.push_back(seed);
-	return seeds.size() - 1;
+	return true;
 }
 
 bool CScanMatchingPoseEstimator::betterSeedResult(const matching::TPoseMatch& later,
@@ -568,15 +568,15 @@ void CScanMatchingPoseEstimator::matchAndFuse(matching::TLineScanFrame& frame, c
 		std::vector<mrpt::poses::CPose2D> seeds;
 		if (lineUsable) seeds.push_back(clonePose + lineMatch->pose);
 		addSeedIfNew(seeds, currentPose());
-		// where the matches the filter keeps refusing put the robot (CMotionPrior)
-		// (its index only when it is a seed of its own: the standstill seed's
-		// result taken for the refused track's was counted as a refusal and
-		// measured the velocity, laser-only aces from entry 250, t = 967 s:
-		// 0.76 -> 0.13 m/s, and the corridor's alias 0.84 m back won next)
+		// Where the matches the filter keeps refusing put the robot
+		// (CMotionPrior); its result is the refused track's only when it is a
+		// seed of its own. Taking the next seed's (the standstill seed's)
+		// counted a refusal and measured the velocity: laser-only aces from
+		// entry 250, t = 967 s, 0.76 -> 0.13 m/s, and the corridor's alias
+		// 0.84 m back won next.
 		const auto refused = m_motion.contradictedMatchSeed(m_matchTime_s);
 		std::optional<size_t> refusedSeed;
-		if (m_options.seed_refused_matches && refused)
-			if (const size_t before = seeds.size(); addSeedIfNew(seeds, *refused) == before) refusedSeed = before;
+		if (m_options.seed_refused_matches && refused && addSeedIfNew(seeds, *refused)) refusedSeed = seeds.size() - 1;
 		if (m_options.standstill_seed_after_gap && m_gapSinceMatch && m_ukf.hasClone())
 			addSeedIfNew(seeds, clonePose);
 		// in a log without odometry, also where the velocity's translation alone carries the robot

@@ -169,8 +169,8 @@ class CScanMatchingPoseEstimator : public CPoseEstimator
 	 * they made the motion prior declare a stall (seed_refused_matches). */
 	void restartAtRefusedMatches(const TMotionPrior& prior, double t_s);
 	/** Appends `seed` unless one within 0.05 m / 1 deg is already there;
-	 * returns the index of the seed that stands for it (that one or the new). */
-	static size_t addSeedIfNew(std::vector<mrpt::poses::CPose2D>& seeds, const mrpt::poses::CPose2D& seed);
+	 * returns whether it was appended. */
+	static bool addSeedIfNew(std::vector<mrpt::poses::CPose2D>& seeds, const mrpt::poses::CPose2D& seed);
 	/** Whether the ICP result of a later seed replaces an earlier one. */
 	bool betterSeedResult(const matching::TPoseMatch& later, const matching::TPoseMatch& earlier) const;
 	/** ICP from each seed (world frame, preferred first); the best result,
