@@ -131,3 +131,45 @@ TEST(BranchAndBound, FindsTheExhaustiveBestOverRotationGroups)
 	}
 	EXPECT_EQ(cases, 24);
 }
+
+TEST(BranchAndBound, RotationsFilledOnDemandGiveTheSameSearchAndSkipUnexpandedOnes)
+{
+	// The matcher hands the search yaws only and fills a rotation's cells when
+	// the search first reads them: same leaves, same nodes scored; a search
+	// whose bound prunes whole rotation groups never fills their members.
+	std::mt19937_64 rng(5);
+	const auto world = irregularRoom();
+	const TPose2D robot{4.0, 3.5, 0.4};
+	const auto reference = transformPoints(scanPoints(world, robot, rng), robot);
+	CMultiResolutionGrid grid;
+	grid.build(reference, 0.05, 0.05, 6);
+	const auto query = scanPoints(world, {4.1, 3.45, 0.45}, rng);
+	const auto filled = rotatedQueries(grid, query, robot, 40);
+	std::vector<detail::TRotatedQuery> yawsOnly(filled.size());
+	for (size_t k = 0; k < filled.size(); ++k) yawsOnly[k].yaw_rad = filled[k].yaw_rad;
+	size_t fills = 0;
+	const detail::TRotationFiller fill = [&](detail::TRotatedQuery& r) {
+		++fills;
+		for (const auto& f : filled)
+			if (f.yaw_rad == r.yaw_rad) r.cx = f.cx, r.cy = f.cy;
+	};
+	const auto none = std::function<bool(int, int, int)>();
+	for (const float bound : {0.3f, 0.6f})
+		for (const bool firstAbove : {false, true})
+		{
+			fills = 0;
+			const auto eager = detail::branchAndBound(grid, filled, 6, bound, none, firstAbove);
+			const auto lazy = detail::branchAndBound(grid, yawsOnly, fill, 6, bound, none, firstAbove);
+			ASSERT_EQ(lazy.found, eager.found);
+			EXPECT_EQ(lazy.best.rotation, eager.best.rotation);
+			EXPECT_EQ(lazy.best.dx, eager.best.dx);
+			EXPECT_EQ(lazy.best.dy, eager.best.dy);
+			EXPECT_FLOAT_EQ(lazy.best.score, eager.best.score);
+			EXPECT_EQ(lazy.nodesScored, eager.nodesScored);
+			EXPECT_LE(fills, filled.size());
+			if (firstAbove)
+			{
+				EXPECT_LT(fills, filled.size()) << "bound " << bound;
+			}
+		}
+}

@@ -26,23 +26,26 @@ double angularStep(double resolution_m, double farthest_m)
 	return std::acos(1.0 - resolution_m * resolution_m / (2.0 * r * r));
 }
 
-std::vector<detail::TRotatedQuery> rotateQuery(const CMultiResolutionGrid& grid, const TPointCloud2D& query,
-											   const mrpt::math::TPose2D& guess, int halfCount, double step_rad)
+/** The window's rotations (yaw only; their cells are filled by rotatedCells when the search needs them). */
+std::vector<detail::TRotatedQuery> windowRotations(const mrpt::math::TPose2D& guess, int halfCount, double step_rad)
 {
 	std::vector<detail::TRotatedQuery> rotations(static_cast<size_t>(2 * halfCount + 1));
-	for (int j = -halfCount; j <= halfCount; ++j)
-	{
-		auto& r = rotations[static_cast<size_t>(j + halfCount)];
-		r.yaw_rad = guess.phi + j * step_rad;
-		const double c = std::cos(r.yaw_rad), s = std::sin(r.yaw_rad);
-		r.cx.reserve(query.size()), r.cy.reserve(query.size());
-		for (const auto& p : query)
-		{
-			r.cx.push_back(grid.cellX(guess.x + c * p.x - s * p.y));
-			r.cy.push_back(grid.cellY(guess.y + s * p.x + c * p.y));
-		}
-	}
+	for (int j = -halfCount; j <= halfCount; ++j) rotations[static_cast<size_t>(j + halfCount)].yaw_rad = guess.phi + j * step_rad;
 	return rotations;
+}
+
+/** The query rotated by r.yaw_rad and moved to the guess, as cells of the grid. */
+void rotatedCells(const CMultiResolutionGrid& grid, const TPointCloud2D& query, const mrpt::math::TPose2D& guess,
+				  detail::TRotatedQuery& r)
+{
+	const double c = std::cos(r.yaw_rad), s = std::sin(r.yaw_rad);
+	r.cx.resize(query.size()), r.cy.resize(query.size());
+	for (size_t i = 0; i < query.size(); ++i)
+	{
+		const auto& p = query[i];
+		r.cx[i] = grid.cellX(guess.x + c * p.x - s * p.y);
+		r.cy[i] = grid.cellY(guess.y + s * p.x + c * p.y);
+	}
 }
 
 /** Bilinear likelihood (0..1) of the finest level at (x, y); cell centres at (i + 0.5) res. */
@@ -58,18 +61,6 @@ double bilinear(const CMultiResolutionGrid& g, double x, double y)
 	return ((1 - fx) * (1 - fy) * v00 + fx * (1 - fy) * v10 + (1 - fx) * fy * v01 + fx * fy * v11) / 255.0;
 }
 
-/** Likelihood of every query point at `pose`. */
-void pointLikelihoods(const CMultiResolutionGrid& g, const TPointCloud2D& query, const mrpt::math::TPose2D& pose,
-					  std::vector<double>& out)
-{
-	out.resize(query.size());
-	const double c = std::cos(pose.phi), s = std::sin(pose.phi);
-	for (size_t i = 0; i < query.size(); ++i)
-	{
-		const auto& p = query[i];
-		out[i] = bilinear(g, pose.x + c * p.x - s * p.y, pose.y + s * p.x + c * p.y);
-	}
-}
 }  // namespace
 
 CNegLogTable::CNegLogTable() : m_table(kIntervals + 1)
@@ -116,7 +107,8 @@ TCorrelativeMatch CCorrelativeScanMatcher::match(const TPointCloud2D& rawQuery, 
 	const size_t thinTo = exclude && !exclude->thinned_query ? 0 : static_cast<size_t>(m_options.search_min_points);
 	const auto searchQuery = adaptiveVoxelFilter(query, thinTo, m_options.search_max_voxel_m);
 	result.search_points = searchQuery.size();
-	const auto rotations = rotateQuery(m_grid, searchQuery, guess, halfRotations, step);
+	const auto rotations = windowRotations(guess, halfRotations, step);
+	const detail::TRotationFiller fill = [&](detail::TRotatedQuery& r) { rotatedCells(m_grid, searchQuery, guess, r); };
 	result.rotations = rotations.size();
 	result.angle_step_rad = step;
 	std::function<bool(int, int, int)> excluded;
@@ -128,7 +120,7 @@ TCorrelativeMatch CCorrelativeScanMatcher::match(const TPointCloud2D& rawQuery, 
 		};
 	const float bound = static_cast<float>(minScore < 0 ? m_options.min_score : minScore);
 	const auto found =
-		detail::branchAndBound(m_grid, rotations, windowCells, bound, excluded, exclude && exclude->first_above_min_score);
+		detail::branchAndBound(m_grid, rotations, fill, windowCells, bound, excluded, exclude && exclude->first_above_min_score);
 	result.nodes_scored = found.nodesScored;
 	if (!found.found) return result;
 	result.found = true;
@@ -149,13 +141,16 @@ double CCorrelativeScanMatcher::scoreAt(const TPointCloud2D& query, const mrpt::
 										double* hitFraction) const
 {
 	if (m_grid.empty() || query.empty()) return 0;
-	std::vector<double> l;
-	pointLikelihoods(m_grid, query, pose, l);
+	const double c = std::cos(pose.phi), s = std::sin(pose.phi);
 	double sum = 0;
 	size_t hits = 0;
-	for (double v : l) sum += v, hits += v >= 0.5 ? 1 : 0;
-	if (hitFraction) *hitFraction = static_cast<double>(hits) / l.size();
-	return sum / l.size();
+	for (const auto& p : query)
+	{
+		const double l = bilinear(m_grid, pose.x + c * p.x - s * p.y, pose.y + s * p.x + c * p.y);
+		sum += l, hits += l >= 0.5 ? 1 : 0;
+	}
+	if (hitFraction) *hitFraction = static_cast<double>(hits) / query.size();
+	return sum / query.size();
 }
 
 void CCorrelativeScanMatcher::refine(const TPointCloud2D& query, double angleStep_rad, TCorrelativeMatch& m) const
@@ -164,15 +159,17 @@ void CCorrelativeScanMatcher::refine(const TPointCloud2D& query, double angleSte
 	// the B&B leaf is exact only to one cell and one angle step.
 	double h[3] = {0.5 * m_grid.resolution_m(), 0.5 * m_grid.resolution_m(), 0.5 * angleStep_rad};
 	auto at = [&](const mrpt::math::TPose2D& p) { return scoreAt(query, p); };
+	double s0 = at(m.pose);  // the score where the fit stands, kept until it moves
 	for (int iter = 0; iter < 4; ++iter, h[0] *= 0.5, h[1] *= 0.5, h[2] *= 0.5)
 		for (int axis = 0; axis < 3; ++axis)
 		{
 			auto minus = m.pose, plus = m.pose;
 			minus[axis] -= h[axis], plus[axis] += h[axis];
-			const double sm = at(minus), s0 = at(m.pose), sp = at(plus);
+			const double sm = at(minus), sp = at(plus);
 			const double curvature = sm - 2 * s0 + sp;
 			if (curvature >= 0) continue;  // not a maximum along this axis
 			m.pose[axis] += std::clamp(0.5 * h[axis] * (sm - sp) / curvature, -h[axis], h[axis]);
+			s0 = at(m.pose);
 		}
 	m.score = scoreAt(query, m.pose, &m.hit_fraction);
 }
@@ -211,13 +208,12 @@ std::vector<double> CCorrelativeScanMatcher::scoreSurfaceChi2(const TPointCloud2
 {
 	// chi2 of the query at pose + (i res, j res, a step) for i, j, a in [-k, k],
 	// index (a, i, j). The xy offsets are whole cells, so a point's bilinear
-	// weights are the same for all of them: computed once per point and angle.
+	// weights are the same for all of them: computed once per point and angle,
+	// and the (n + 1)^2 cells its n^2 offsets read are converted once.
 	const int n = 2 * k + 1;
 	const double res = m_grid.resolution_m();
-	const CNegLogTable& nll = m_negLog;
-	const uint8_t* cells = m_grid.levelData(0);
-	const ptrdiff_t W = m_grid.width();
 	std::vector<double> chi2(static_cast<size_t>(n * n * n), 0.0);
+	std::vector<double> patch(static_cast<size_t>((n + 1) * (n + 1)));
 	for (int a = 0; a < n; ++a)
 	{
 		const double yaw = pose.phi + (a - k) * angleStep_rad, c = std::cos(yaw), s = std::sin(yaw);
@@ -227,28 +223,43 @@ std::vector<double> CCorrelativeScanMatcher::scoreSurfaceChi2(const TPointCloud2
 			const double u = (pose.x + c * p.x - s * p.y - m_grid.originX_m()) / res - 0.5;
 			const double v = (pose.y + s * p.x + c * p.y - m_grid.originY_m()) / res - 0.5;
 			const int i0 = static_cast<int>(std::floor(u)) - k, j0 = static_cast<int>(std::floor(v)) - k;
-			const double fx = u - std::floor(u), fy = v - std::floor(v);
-			const double w00 = (1 - fx) * (1 - fy), w10 = fx * (1 - fy), w01 = (1 - fx) * fy, w11 = fx * fy;
-			const bool inside = i0 >= 0 && j0 >= 0 && i0 + n < m_grid.width() && j0 + n < m_grid.height();
-			for (int i = 0; i < n; ++i)
-				for (int j = 0; j < n; ++j)
-				{
-					const int x = i0 + i, y = j0 + j;
-					double l;
-					if (inside)
-					{
-						const uint8_t* c0 = cells + static_cast<ptrdiff_t>(y) * W + x;
-						l = (w00 * c0[0] + w10 * c0[1] + w01 * c0[W] + w11 * c0[W + 1]) / 255.0;
-					}
-					else
-						l = (w00 * m_grid.value(0, x, y) + w10 * m_grid.value(0, x + 1, y) +
-							 w01 * m_grid.value(0, x, y + 1) + w11 * m_grid.value(0, x + 1, y + 1)) /
-							255.0;
-					slice[i * n + j] += nll(l);
-				}
+			loadPatch(i0, j0, n + 1, patch);
+			addPointChi2(patch.data(), n, u - std::floor(u), v - std::floor(v), slice);
 		}
 	}
 	return chi2;
+}
+
+void CCorrelativeScanMatcher::loadPatch(int x0, int y0, int size, std::vector<double>& patch) const
+{
+	// patch[j * size + i] = cell (x0 + i, y0 + j) of the finest level
+	if (x0 >= 0 && y0 >= 0 && x0 + size <= m_grid.width() && y0 + size <= m_grid.height())
+	{
+		const uint8_t* cells = m_grid.levelData(0);
+		const ptrdiff_t W = m_grid.width();
+		for (int j = 0; j < size; ++j)
+		{
+			const uint8_t* row = cells + static_cast<ptrdiff_t>(y0 + j) * W + x0;
+			for (int i = 0; i < size; ++i) patch[static_cast<size_t>(j * size + i)] = row[i];
+		}
+		return;
+	}
+	for (int j = 0; j < size; ++j)
+		for (int i = 0; i < size; ++i) patch[static_cast<size_t>(j * size + i)] = m_grid.value(0, x0 + i, y0 + j);
+}
+
+void CCorrelativeScanMatcher::addPointChi2(const double* patch, int n, double fx, double fy, double* slice) const
+{
+	// -2 log of the bilinear likelihood at each of the n x n whole-cell offsets
+	const double w00 = (1 - fx) * (1 - fy), w10 = fx * (1 - fy), w01 = (1 - fx) * fy, w11 = fx * fy;
+	const int size = n + 1;
+	for (int i = 0; i < n; ++i)
+		for (int j = 0; j < n; ++j)
+		{
+			const double* c0 = patch + j * size + i;
+			const double l = (w00 * c0[0] + w10 * c0[1] + w01 * c0[size] + w11 * c0[size + 1]) / 255.0;
+			slice[i * n + j] += m_negLog(l);
+		}
 }
 
 }  // namespace hslam::graph

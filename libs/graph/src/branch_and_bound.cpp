@@ -70,10 +70,11 @@ TGrouping groupingFor(int topLevel, size_t rotationCount)
 class CSearch
 {
    public:
-	CSearch(const CMultiResolutionGrid& grid, const std::vector<TRotatedQuery>& rotations, int windowCells,
-			const std::function<bool(int, int, int)>& excluded, bool firstAbove)
+	CSearch(const CMultiResolutionGrid& grid, const std::vector<TRotatedQuery>& rotations, const TRotationFiller& fill,
+			int windowCells, const std::function<bool(int, int, int)>& excluded, bool firstAbove)
 		: m_grid(grid),
 		  m_queries(rotations),
+		  m_fill(fill),
 		  m_w(windowCells),
 		  m_excluded(excluded),
 		  m_firstAbove(firstAbove),
@@ -187,7 +188,10 @@ class CSearch
 	const TSplitQuery& split(int rotation)
 	{
 		const auto r = static_cast<size_t>(rotation);
-		if (!m_split[r]) m_rot[r] = splitQuery(m_grid, m_queries[r], m_w + m_group.g + 1), m_split[r] = true;
+		if (m_split[r]) return m_rot[r];
+		const TRotatedQuery* q = &m_queries[r];
+		if (m_fill) m_scratch.yaw_rad = q->yaw_rad, m_fill(m_scratch), q = &m_scratch;
+		m_rot[r] = splitQuery(m_grid, *q, m_w + m_group.g + 1), m_split[r] = true;
 		return m_rot[r];
 	}
 
@@ -227,6 +231,8 @@ class CSearch
 
 	const CMultiResolutionGrid& m_grid;
 	const std::vector<TRotatedQuery>& m_queries;
+	const TRotationFiller& m_fill;  //!< empty: the rotations came filled
+	TRotatedQuery m_scratch;  //!< the rotation being filled
 	int m_w;
 	const std::function<bool(int, int, int)>& m_excluded;
 	bool m_firstAbove;  //!< stop at the first leaf above the bound (an existence test)
@@ -240,7 +246,18 @@ TSearchResult branchAndBound(const CMultiResolutionGrid& grid, const std::vector
 							 int windowCells, float minScore, const std::function<bool(int, int, int)>& excluded,
 							 bool firstAbove)
 {
-	CSearch s(grid, rotations, windowCells, excluded, firstAbove);
+	const TRotationFiller none;
+	CSearch s(grid, rotations, none, windowCells, excluded, firstAbove);
+	auto result = s.search(s.topLevel(minScore), minScore, s.grouped());
+	result.nodesScored = s.nodesScored;
+	return result;
+}
+
+TSearchResult branchAndBound(const CMultiResolutionGrid& grid, const std::vector<TRotatedQuery>& rotations,
+							 const TRotationFiller& fill, int windowCells, float minScore,
+							 const std::function<bool(int, int, int)>& excluded, bool firstAbove)
+{
+	CSearch s(grid, rotations, fill, windowCells, excluded, firstAbove);
 	auto result = s.search(s.topLevel(minScore), minScore, s.grouped());
 	result.nodesScored = s.nodesScored;
 	return result;

@@ -17,6 +17,10 @@ struct TRotatedQuery
 	std::vector<int> cx, cy;  //!< cell of every query point at zero offset
 };
 
+/** Fills a rotation's cells when the search first needs them (most
+ * rotations of a search with a high bound are never expanded). */
+using TRotationFiller = std::function<void(TRotatedQuery&)>;
+
 /** A node of the search: rotation index, offset of the first cell of its
  * block, level (block of 2^level x 2^level offsets) and its score bound. */
 struct TCandidate
@@ -42,5 +46,11 @@ struct TSearchResult
 TSearchResult branchAndBound(const CMultiResolutionGrid& grid, const std::vector<TRotatedQuery>& rotations,
 							 int windowCells, float minScore, const std::function<bool(int, int, int)>& excluded,
 							 bool firstAbove = false);
+
+/** The same search over rotations given by their yaw only: `fill` computes a
+ * rotation's cells (from its yaw) the first time the search reads them. */
+TSearchResult branchAndBound(const CMultiResolutionGrid& grid, const std::vector<TRotatedQuery>& rotations,
+							 const TRotationFiller& fill, int windowCells, float minScore,
+							 const std::function<bool(int, int, int)>& excluded, bool firstAbove = false);
 
 }  // namespace hslam::graph::detail

@@ -181,6 +181,11 @@ class CCorrelativeScanMatcher
 	TPointCloud2D filteredQuery(const TPointCloud2D& query) const;
 
    private:
+	/** The finest level's cells (x0 + i, y0 + j), i, j < size, as doubles (row j). */
+	void loadPatch(int x0, int y0, int size, std::vector<double>& patch) const;
+	/** Adds one point's -2 log likelihood at n x n whole-cell offsets to `slice`
+	 * (index i n + j), its bilinear fractions fx, fy within the patch's first cell. */
+	void addPointChi2(const double* patch, int n, double fx, double fy, double* slice) const;
 	void refine(const TPointCloud2D& query, double angleStep_rad, TCorrelativeMatch& m) const;
 	Eigen::Matrix3d scoreSurfaceCovariance(const TPointCloud2D& query, const mrpt::math::TPose2D& pose,
 										   double angleStep_rad) const;
