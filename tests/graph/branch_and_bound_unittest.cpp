@@ -47,6 +47,12 @@ float leafScore(const CMultiResolutionGrid& grid, const detail::TRotatedQuery& q
 	return static_cast<float>(sum) / (255.f * static_cast<float>(q.cx.size()));
 }
 
+/** The irregular room's scan from `robot`, in the world frame (a reference). */
+TPointCloud2D roomSeenFrom(const TPose2D& robot, std::mt19937_64& rng)
+{
+	return transformPoints(scanPoints(irregularRoom(), robot, rng), robot);
+}
+
 float exhaustiveBest(const CMultiResolutionGrid& grid, const std::vector<detail::TRotatedQuery>& rotations, int w,
 					 const std::function<bool(int, int, int)>& excluded)
 {
@@ -67,8 +73,7 @@ TEST(BranchAndBound, FindsTheExhaustiveBestOverRotationGroups)
 	// cell shows as a wrong best.
 	std::mt19937_64 rng(3);
 	const auto world = irregularRoom();
-	const TPose2D robot{4.0, 3.5, 0.4};
-	const auto all = transformPoints(scanPoints(world, robot, rng), robot);
+	const auto all = roomSeenFrom({4.0, 3.5, 0.4}, rng);
 	TPointCloud2D sparse;
 	for (size_t i = 0; i < all.size(); i += 4) sparse.push_back(all[i]);
 	std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -138,12 +143,10 @@ TEST(BranchAndBound, RotationsFilledOnDemandGiveTheSameSearchAndSkipUnexpandedOn
 	// the search first reads them: same leaves, same nodes scored; a search
 	// whose bound prunes whole rotation groups never fills their members.
 	std::mt19937_64 rng(5);
-	const auto world = irregularRoom();
 	const TPose2D robot{4.0, 3.5, 0.4};
-	const auto reference = transformPoints(scanPoints(world, robot, rng), robot);
 	CMultiResolutionGrid grid;
-	grid.build(reference, 0.05, 0.05, 6);
-	const auto query = scanPoints(world, {4.1, 3.45, 0.45}, rng);
+	grid.build(roomSeenFrom(robot, rng), 0.05, 0.05, 6);
+	const auto query = scanPoints(irregularRoom(), {4.1, 3.45, 0.45}, rng);
 	const auto filled = rotatedQueries(grid, query, robot, 40);
 	std::vector<detail::TRotatedQuery> yawsOnly(filled.size());
 	for (size_t k = 0; k < filled.size(); ++k) yawsOnly[k].yaw_rad = filled[k].yaw_rad;
