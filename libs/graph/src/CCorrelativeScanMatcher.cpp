@@ -26,11 +26,12 @@ double angularStep(double resolution_m, double farthest_m)
 	return std::acos(1.0 - resolution_m * resolution_m / (2.0 * r * r));
 }
 
-/** The window's rotations (yaw only; their cells are filled by rotatedCells when the search needs them). */
+/** The window's rotations, yaw only: rotatedCells fills one when the search first reads it. */
 std::vector<detail::TRotatedQuery> windowRotations(const mrpt::math::TPose2D& guess, int halfCount, double step_rad)
 {
 	std::vector<detail::TRotatedQuery> rotations(static_cast<size_t>(2 * halfCount + 1));
-	for (int j = -halfCount; j <= halfCount; ++j) rotations[static_cast<size_t>(j + halfCount)].yaw_rad = guess.phi + j * step_rad;
+	for (int j = -halfCount; j <= halfCount; ++j)
+		rotations[static_cast<size_t>(j + halfCount)].yaw_rad = guess.phi + j * step_rad;
 	return rotations;
 }
 
@@ -108,7 +109,8 @@ TCorrelativeMatch CCorrelativeScanMatcher::match(const TPointCloud2D& rawQuery, 
 	const auto searchQuery = adaptiveVoxelFilter(query, thinTo, m_options.search_max_voxel_m);
 	result.search_points = searchQuery.size();
 	const auto rotations = windowRotations(guess, halfRotations, step);
-	const detail::TRotationFiller fill = [&](detail::TRotatedQuery& r) { rotatedCells(m_grid, searchQuery, guess, r); };
+	const detail::TRotationFiller fill = [&](detail::TRotatedQuery& r)
+	{ rotatedCells(m_grid, searchQuery, guess, r); };
 	result.rotations = rotations.size();
 	result.angle_step_rad = step;
 	std::function<bool(int, int, int)> excluded;
@@ -119,8 +121,8 @@ TCorrelativeMatch CCorrelativeScanMatcher::match(const TPointCloud2D& rawQuery, 
 			return std::hypot(ex, ey) <= exclude->xy_m && std::abs(eyaw) <= exclude->yaw_rad;
 		};
 	const float bound = static_cast<float>(minScore < 0 ? m_options.min_score : minScore);
-	const auto found =
-		detail::branchAndBound(m_grid, rotations, fill, windowCells, bound, excluded, exclude && exclude->first_above_min_score);
+	const bool firstAbove = exclude && exclude->first_above_min_score;
+	const auto found = detail::branchAndBound(m_grid, rotations, fill, windowCells, bound, excluded, firstAbove);
 	result.nodes_scored = found.nodesScored;
 	if (!found.found) return result;
 	result.found = true;

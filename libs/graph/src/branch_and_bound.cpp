@@ -302,11 +302,7 @@ TSearchResult branchAndBound(const CMultiResolutionGrid& grid, const std::vector
 							 int windowCells, float minScore, const std::function<bool(int, int, int)>& excluded,
 							 bool firstAbove)
 {
-	const TRotationFiller none;
-	CSearch s(grid, rotations, none, windowCells, excluded, firstAbove);
-	auto result = s.search(s.topLevel(minScore), minScore, s.grouped());
-	result.nodesScored = s.nodesScored;
-	return result;
+	return branchAndBound(grid, rotations, TRotationFiller(), windowCells, minScore, excluded, firstAbove);
 }
 
 TSearchResult branchAndBound(const CMultiResolutionGrid& grid, const std::vector<TRotatedQuery>& rotations,

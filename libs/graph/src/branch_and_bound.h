@@ -17,8 +17,9 @@ struct TRotatedQuery
 	std::vector<int> cx, cy;  //!< cell of every query point at zero offset
 };
 
-/** Fills a rotation's cells when the search first needs them (most
- * rotations of a search with a high bound are never expanded). */
+/** Fills a rotation's cells when the search first reads them: a search for
+ * the best pose expands every rotation group, an existence search (stopping
+ * at the first leaf above its bound) few of them. */
 using TRotationFiller = std::function<void(TRotatedQuery&)>;
 
 /** A node of the search: rotation index, offset of the first cell of its
