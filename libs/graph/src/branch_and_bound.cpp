@@ -85,32 +85,12 @@ class CSearch
 	}
 
 	/** Mean level value of the query of `c.rotation` shifted by (dx, dy), 0..1
-	 * (a group node: the bound of all its rotations and offsets). Summing
-	 * stops once the node cannot score above `bound` even if every point left
-	 * scored 255: such a node is pruned whatever its exact score, so the
-	 * search visits the same nodes (the value returned is then <= bound). */
+	 * (a group node: the bound of all its rotations and offsets). */
 	float score(const TCandidate& c, float bound, bool group = false)
 	{
-		++nodesScored;
-		const auto& q = split(c.rotation);
-		if (q.count == 0) return 0.f;
-		const int shift = group ? m_group.g + 1 : 0, dx = c.dx - shift, dy = c.dy - shift;
-		const uint8_t* cells = m_grid.levelData(c.level) + (dy * m_grid.width() + dx);
-		const float scale = 255.f * static_cast<float>(q.count);
-		// the sum a node must exceed, as an integer: sum > need <=> score > bound
-		const long need = static_cast<long>(std::floor(static_cast<double>(bound) * scale));
-		long sum = 0, left = 255L * static_cast<long>(q.count);
-		constexpr size_t kChunk = 32;
-		for (size_t i = 0; i < q.flat.size(); i += kChunk)
-		{
-			const size_t end = std::min(q.flat.size(), i + kChunk);
-			unsigned part = 0;
-			for (size_t j = i; j < end; ++j) part += cells[q.flat[j]];
-			sum += part, left -= 255L * static_cast<long>(end - i);
-			if (sum + left <= need) return static_cast<float>(sum + left) / scale;
-		}
-		for (size_t i = 0; i < q.cx.size(); ++i) sum += m_grid.value(c.level, q.cx[i] + dx, q.cy[i] + dy);
-		return static_cast<float>(sum) / scale;
+		float value = 0.f;
+		scoreNodes<1>(&c, 1, bound, group ? m_group.g + 1 : 0, &value);
+		return value;
 	}
 
 	/** Top nodes, sorted by bound: rotation groups (rotation = the middle
@@ -221,10 +201,12 @@ class CSearch
 				const TCandidate child{c.rotation, c.dx + ox, c.dy + oy, c.level - 1, 0.f};
 				if (child.dx <= m_w && child.dy <= m_w) kids[n++] = child;
 			}
-		scoreSiblings(kids, n, bound);
+		std::array<float, 4> scores{};
+		scoreNodes<4>(kids.data(), n, bound, 0, scores.data());
 		TChildren out;
 		for (size_t k = 0; k < n; ++k)
 		{
+			kids[k].score = scores[k];
 			size_t i = out.n++;  // insertion sort, stable like std::sort on so few
 			for (; i > 0 && byScore(kids[k], out.c[i - 1]); --i) out.c[i] = out.c[i - 1];
 			out.c[i] = kids[k];
@@ -232,54 +214,52 @@ class CSearch
 		return out;
 	}
 
-	/** score() of up to four nodes of one rotation and level in one pass
-	 * over its points: their cells lie within 2^level of each other (the same
-	 * cache lines at the finest levels). A node stops counting once it cannot
-	 * beat `bound`, as in score(); a node that can is summed over every point,
-	 * so its score is score()'s to the bit. */
-	void scoreSiblings(std::array<TCandidate, 4>& nodes, size_t n, float bound)
+	/** score() of up to N nodes of one rotation and level (their offsets
+	 * moved back by `shift` cells) in one pass over its points: siblings'
+	 * cells lie within 2^level of each other, on the same cache lines at the
+	 * finest levels. A node's summing stops once it cannot score above
+	 * `bound` even if every point left scored 255: such a node is pruned
+	 * whatever its exact score, so the search visits the same nodes (the
+	 * value given is then <= bound); a node that can is summed over every
+	 * point, to the bit. */
+	template <size_t N>
+	void scoreNodes(const TCandidate* nodes, size_t n, float bound, int shift, float* out)
 	{
 		nodesScored += n;
 		const auto& q = split(nodes[0].rotation);
-		if (q.count == 0)
-		{
-			for (size_t k = 0; k < n; ++k) nodes[k].score = 0.f;
-			return;
-		}
+		if (q.count == 0) return std::fill(out, out + n, 0.f);
 		const uint8_t* cells = m_grid.levelData(nodes[0].level);
-		std::array<ptrdiff_t, 4> offset{};  // absent nodes read the first one's cells, unused
-		for (size_t k = 0; k < 4; ++k)
+		std::array<ptrdiff_t, N> offset{};  // absent nodes read the first one's cells, unused
+		for (size_t k = 0; k < N; ++k)
 		{
 			const TCandidate& c = nodes[k < n ? k : 0];
-			offset[k] = static_cast<ptrdiff_t>(c.dy) * m_grid.width() + c.dx;
+			offset[k] = static_cast<ptrdiff_t>(c.dy - shift) * m_grid.width() + (c.dx - shift);
 		}
 		const float scale = 255.f * static_cast<float>(q.count);
+		// the sum a node must exceed, as an integer: sum > need <=> score > bound
 		const long need = static_cast<long>(std::floor(static_cast<double>(bound) * scale));
-		std::array<long, 4> sum{};
-		std::array<bool, 4> done{};
+		std::array<long, N> sum{};
+		std::array<bool, N> done{};
 		long left = 255L * static_cast<long>(q.count);
 		size_t open = n;
 		constexpr size_t kChunk = 32;
 		for (size_t i = 0; i < q.flat.size() && open > 0; i += kChunk)
 		{
 			const size_t end = std::min(q.flat.size(), i + kChunk);
-			std::array<unsigned, 4> part{};
+			std::array<unsigned, N> part{};
 			for (size_t j = i; j < end; ++j)
-			{
-				const uint8_t* c = cells + q.flat[j];
-				part[0] += c[offset[0]], part[1] += c[offset[1]], part[2] += c[offset[2]], part[3] += c[offset[3]];
-			}
+				for (size_t k = 0; k < N; ++k) part[k] += cells[q.flat[j] + offset[k]];
 			left -= 255L * static_cast<long>(end - i);
 			for (size_t k = 0; k < n; ++k)
 				if (!done[k] && (sum[k] += part[k]) + left <= need)
-					done[k] = true, --open, nodes[k].score = static_cast<float>(sum[k] + left) / scale;
+					done[k] = true, --open, out[k] = static_cast<float>(sum[k] + left) / scale;
 		}
 		for (size_t k = 0; k < n; ++k)
 		{
 			if (done[k]) continue;
-			for (size_t i = 0; i < q.cx.size(); ++i)
-				sum[k] += m_grid.value(nodes[k].level, q.cx[i] + nodes[k].dx, q.cy[i] + nodes[k].dy);
-			nodes[k].score = static_cast<float>(sum[k]) / scale;
+			const int dx = nodes[k].dx - shift, dy = nodes[k].dy - shift;
+			for (size_t i = 0; i < q.cx.size(); ++i) sum[k] += m_grid.value(nodes[k].level, q.cx[i] + dx, q.cy[i] + dy);
+			out[k] = static_cast<float>(sum[k]) / scale;
 		}
 	}
 
