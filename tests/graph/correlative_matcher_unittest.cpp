@@ -4,6 +4,8 @@
 #include <hslam/graph/CPoseGraph.h>
 #include <mrpt/math/wrap2pi.h>
 
+#include <Eigen/LU>
+
 #include "sim_scans.h"
 
 using namespace hslam::graph;
@@ -67,6 +69,39 @@ TEST(CorrelativeScanMatcher, RecoversKnownOffsetOf80cmAnd20deg)
 	// branch-and-bound scored a small part of the window's leaves
 	const double leaves = m.rotations * std::pow(2 * std::ceil(opt.window_xy_m / opt.resolution_m) + 1, 2);
 	EXPECT_LT(m.nodes_scored, 0.02 * leaves);
+}
+
+TEST(CorrelativeScanMatcher, MatchNearRefinesAGuessWithinACellAndFindsNothingElsewhere)
+{
+	// matchNear (a closure tracked from the keyframe before): a search of
+	// two cells and two rotation steps from a guess a cell and an angle step off.
+	std::mt19937_64 rng(7);
+	const auto world = irregularRoom();
+	CCorrelativeScanMatcher matcher;
+	matcher.setReference(roomReference(world, rng));
+	const TPose2D frame{3.0, 3.5, 0.0}, robot{4.2, 4.4, 0.6};
+	const TPose2D truth = relativePose(frame, robot);
+	const auto scan = scanPoints(world, robot, rng);
+	const auto searched = matcher.match(scan, {truth.x + 0.3, truth.y - 0.2, truth.phi + 0.1});
+	const auto near = matcher.matchNear(scan, {truth.x + 0.04, truth.y - 0.03, truth.phi + mrpt::DEG2RAD(0.6)}, 0.55);
+	ASSERT_TRUE(near.found);
+	EXPECT_NEAR(near.pose.x, truth.x, 0.02);
+	EXPECT_NEAR(near.pose.y, truth.y, 0.02);
+	EXPECT_NEAR(mrpt::RAD2DEG(mrpt::math::wrapToPi(near.pose.phi - truth.phi)), 0.0, 0.5);
+	// the same peak as the search's, to a few millimetres and the same score
+	EXPECT_NEAR(near.pose.x, searched.pose.x, 0.01);
+	EXPECT_NEAR(near.pose.y, searched.pose.y, 0.01);
+	EXPECT_NEAR(near.score, searched.score, 0.01);
+	EXPECT_GT(near.angle_step_rad, 0.0);
+	EXPECT_EQ(near.rotations, 5u);
+	EXPECT_LT(near.nodes_scored, 200u);  // the full search's window: 81 rotations
+	// its covariance is the score surface's, as for a searched match
+	const Eigen::Matrix3d cov = matcher.covarianceOf(scan, near);
+	EXPECT_LT(std::sqrt(cov(0, 0)), 0.05);
+	EXPECT_GT(cov.determinant(), 0.0);
+	// 1.5 m off, two cells cannot reach the room's fit
+	const auto off = matcher.matchNear(scan, {truth.x + 1.5, truth.y, truth.phi}, 0.55);
+	EXPECT_FALSE(off.found);
 }
 
 TEST(CorrelativeScanMatcher, NoMatchOutsideTheWindowOrInAnotherPlace)

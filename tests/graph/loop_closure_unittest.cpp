@@ -217,6 +217,46 @@ TEST(LoopClosure, SearchStopsAtTheFirstAcceptedClosureOfAKeyframe)
 	EXPECT_LT(ate_m(first.optimized, truth), 0.3);
 }
 
+TEST(LoopClosure, ClosuresAreTrackedFromTheKeyframeBeforeOnlyAfterConfirmation)
+{
+	// [loop_closure] max_tracked_in_a_row: a submap whose closure the
+	// keyframe before kept is verified from that closure (no search, no
+	// second-peak search). Only kept (confirmed) closures are followed, at
+	// most max_tracked_in_a_row in a row, and the loop closes as well.
+	const auto world = loopCorridor();
+	const auto truth = keyframePath(loopWaypoints());
+	auto run = [&](int maxTracked) {
+		TLoopClosureOptions lc;
+		lc.max_tracked_in_a_row = maxTracked;
+		CGraphBackend backend({}, lc);
+		return runBackend(world, truth, TFrontEndErrors{}, backend);
+	};
+	const auto searched = run(0), tracked = run(4);
+	EXPECT_EQ(TLoopClosureOptions{}.max_tracked_in_a_row, 4);
+	size_t trackedCount = 0, accepted = 0;
+	for (const auto& c : searched.closures) EXPECT_EQ(c.tracked_in_a_row, 0);
+	for (const auto& c : tracked.closures)
+	{
+		if (c.tracked_in_a_row == 0) continue;
+		++trackedCount;
+		EXPECT_LE(c.tracked_in_a_row, 4);
+		// the closure it follows: the same submap, the keyframe before, kept in the graph
+		const auto before = std::find_if(tracked.closures.begin(), tracked.closures.end(), [&](const TLoopClosure& b) {
+			return b.query_node + 1 == c.query_node && b.submap == c.submap && b.accepted &&
+				   b.tracked_in_a_row + 1 == c.tracked_in_a_row;
+		});
+		EXPECT_NE(before, tracked.closures.end()) << "keyframe " << c.query_keyframe_id;
+	}
+	expectClosuresNearTruth(tracked, accepted);  // every accepted closure, tracked or searched
+	const double ateSearched = ate_m(searched.optimized, truth), ateTracked = ate_m(tracked.optimized, truth);
+	std::cout << "tracked closures " << trackedCount << " of " << tracked.closures.size() << " tested, ATE "
+			  << ateSearched << " -> " << ateTracked << " m\n";
+	EXPECT_GE(trackedCount, 5u);
+	EXPECT_GE(accepted, 5u);
+	EXPECT_LT(ateTracked, 0.3);
+	EXPECT_LT(ateTracked, ateSearched + 0.05);
+}
+
 namespace
 {
 /** Room of 8 x 6 m at x0 (y 2.5..8.5) with a door in its bottom wall and

@@ -134,6 +134,18 @@ TCorrelativeMatch CCorrelativeScanMatcher::match(const TPointCloud2D& rawQuery, 
 	return result;
 }
 
+TCorrelativeMatch CCorrelativeScanMatcher::matchNear(const TPointCloud2D& query, const mrpt::math::TPose2D& guess,
+													 double minScore) const
+{
+	// two cells and two rotation steps each way: a guess a few centimetres
+	// off still has the peak inside (the refinement alone moves less than a
+	// cell per axis: 2 cm lower scores from 4 cm off in the unit test)
+	constexpr double kCells = 2;
+	const double step = angularStep(m_grid.resolution_m(), farthestRange(filteredQuery(query)));
+	const TSearchWindow near{kCells * m_grid.resolution_m(), kCells * step};
+	return match(query, guess, near, nullptr, minScore, EMatchOutput::pose_only);
+}
+
 Eigen::Matrix3d CCorrelativeScanMatcher::covarianceOf(const TPointCloud2D& query, const TCorrelativeMatch& m) const
 {
 	return scoreSurfaceCovariance(filteredQuery(query), m.pose, m.angle_step_rad);

@@ -83,6 +83,7 @@ TKeyframeResult CGraphBackend::addKeyframe(const TKeyframe& kf)
 	for (auto& c : result.closures)  // report the status after the optimiser
 		for (const auto& stored : m_closures)
 			if (c.edge >= 0 && stored.edge == c.edge) c.accepted = stored.accepted, c.reason = stored.reason;
+	if (m_options.detect_loops) m_detector.keepTracks(result.node, result.closures);
 	result.time_ms = msSince(t0);
 	++m_timing.keyframes;
 	m_timing.total_ms += result.time_ms;

@@ -53,6 +53,12 @@ double closureInformationGain(const Eigen::Matrix3d& relative, double closureXyS
 	return 0.5 * std::log(sum.determinant() / closureVar.prod());
 }
 
+double largestXyVariance(const Eigen::Matrix3d& covariance)
+{
+	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> xy(covariance.topLeftCorner<2, 2>());
+	return std::max(0.0, xy.eigenvalues().maxCoeff());
+}
+
 namespace
 {
 /** search_threads, or with 0 one per hardware thread but no more than a
@@ -139,8 +145,7 @@ std::vector<CLoopClosureDetector::TCandidate> CLoopClosureDetector::candidates(
 		TCandidate c;
 		c.submap = s;
 		c.relativeCovariance = *relative;
-		const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> xy(c.relativeCovariance.topLeftCorner<2, 2>());
-		c.xy_std_m = std::sqrt(std::max(0.0, xy.eigenvalues().maxCoeff()));
+		c.xy_std_m = std::sqrt(largestXyVariance(c.relativeCovariance));
 		c.yaw_std_rad = std::sqrt(std::max(0.0, c.relativeCovariance(2, 2)));
 		c.window.xy_m =
 			std::clamp(m_options.window_sigmas * c.xy_std_m, m_options.min_window_xy_m, m_options.max_window_xy_m);
@@ -150,6 +155,8 @@ std::vector<CLoopClosureDetector::TCandidate> CLoopClosureDetector::candidates(
 		if (c.distance_m > m_options.overlap_distance_m + c.window.xy_m) continue;
 		c.information_gain_nats = closureInformationGain(c.relativeCovariance, m_options.closure_xy_std_m,
 														 m_options.closure_yaw_std_rad);
+		const auto track = m_tracks.find(s);
+		if (track != m_tracks.end() && track->second.in_a_row < m_options.max_tracked_in_a_row) c.track = track->second;
 		if (c.information_gain_nats < m_options.min_information_gain_nats)
 		{
 			++m_skippedLittleInformation;
@@ -204,6 +211,14 @@ std::vector<TLoopClosure> CLoopClosureDetector::verifyAll(const std::vector<TCan
 		m_pool->run(count, [&](size_t k) { out[first + k] = verify(cands[first + k], *fields[k], node, graph); });
 	}
 	return out;
+}
+
+void CLoopClosureDetector::keepTracks(size_t node, const std::vector<TLoopClosure>& closures)
+{
+	std::map<size_t, TClosureTrack> tracks;
+	for (const auto& c : closures)
+		if (c.accepted && c.query_node == node) tracks[c.submap] = TClosureTrack{node, c.relative, c.tracked_in_a_row};
+	m_tracks = std::move(tracks);
 }
 
 std::vector<TLoopClosure> CLoopClosureDetector::detect(size_t node, const CPoseGraph& graph,

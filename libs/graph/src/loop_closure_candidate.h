@@ -5,6 +5,8 @@
 #include <hslam/graph/CLoopClosureDetector.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 
+#include <optional>
+
 namespace hslam::graph
 {
 struct CLoopClosureDetector::TCandidate
@@ -15,6 +17,7 @@ struct CLoopClosureDetector::TCandidate
 	double xy_std_m = 0, yaw_std_rad = 0;  //!< of relativeCovariance: largest xy axis, heading
 	TSearchWindow window;
 	double information_gain_nats = 0;  //!< closureInformationGain of relativeCovariance
+	std::optional<TClosureTrack> track;  //!< verified from this closure, not searched
 };
 
 /** A submap's likelihood field, its points as an MRPT map for the ICP check

@@ -52,6 +52,20 @@ bool CLoopClosureDetector::matchBest(const CCorrelativeScanMatcher& m, const TCa
 	return true;
 }
 
+bool CLoopClosureDetector::matchTracked(const CCorrelativeScanMatcher& m, const TCandidate& c, const CPoseGraph& graph,
+										TLoopClosure& out, TCorrelativeMatch& best) const
+{
+	const auto& nodes = graph.nodes();
+	const auto guess = composePose(c.track->relative, relativePose(nodes[c.track->node].pose, nodes[out.query_node].pose));
+	best = m.matchNear(m_queryPoints, guess, m_options.min_score);
+	out.tracked_in_a_row = c.track->in_a_row + 1;
+	out.score = best.score, out.hit_fraction = best.hit_fraction;
+	if (!best.found) return reject(out, "low score");
+	out.relative = best.pose;
+	if (best.hit_fraction < m_options.min_hit_fraction) return reject(out, "low overlap");
+	return true;
+}
+
 bool CLoopClosureDetector::checkUniqueness(const CCorrelativeScanMatcher& m, const TCandidate& c,
 										   const TCorrelativeMatch& best, TLoopClosure& out) const
 {
@@ -137,11 +151,13 @@ TLoopClosure CLoopClosureDetector::verify(const TCandidate& c, const TSubmapFiel
 	// uniqueness (a second search), then the consistency gate, the only one
 	// that needs the closure's score-surface covariance
 	TCorrelativeMatch best;
-	if (!matchBest(field.matcher, c, out, best) || !refineWithIcp(field, out)) return finish();
-	if (!checkFreeSide(field, out) || !checkUniqueness(field.matcher, c, best, out)) return finish();
+	const bool matched = c.track ? matchTracked(field.matcher, c, graph, out, best) : matchBest(field.matcher, c, out, best);
+	if (!matched || !refineWithIcp(field, out) || !checkFreeSide(field, out)) return finish();
+	if (!c.track && !checkUniqueness(field.matcher, c, best, out)) return finish();
 	// the score-surface covariance only for a closure that passed every test
 	// that does not need it (intel: 259 ambiguous candidates no longer pay it)
 	out.covariance = field.matcher.covarianceOf(m_queryPoints, best);
+	out.has_covariance = true;
 	if (!checkConsistency(c, out)) return finish();
 	out.accepted = true;
 	out.reason = "accepted";

@@ -168,7 +168,13 @@ class CCorrelativeScanMatcher
 							const TSearchExclusion* exclude = nullptr, double minScore = -1,
 							EMatchOutput output = EMatchOutput::pose_and_covariance) const;
 
-	/** Score-surface covariance of a match found by match() for `query`. */
+	/** match() in a window of two cells and two rotation steps around
+	 * `guess` (125 leaves): for a pose already known to a few centimetres,
+	 * e.g. a closure tracked from the keyframe before. No covariance
+	 * (covarianceOf() gives it). */
+	TCorrelativeMatch matchNear(const TPointCloud2D& query, const mrpt::math::TPose2D& guess, double minScore = -1) const;
+
+	/** Score-surface covariance of a match found by match() or matchNear() for `query`. */
 	Eigen::Matrix3d covarianceOf(const TPointCloud2D& query, const TCorrelativeMatch& m) const;
 
 	/** Mean likelihood of the query at `pose` (bilinear on the finest level),

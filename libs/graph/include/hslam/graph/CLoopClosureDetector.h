@@ -32,6 +32,13 @@
  *  5. uniqueness: no other pose in the window, its translation widened by
  *     ambiguity_window_factor (outside a small exclusion around the best),
  *     reaches ambiguity_ratio x the best score (repeated rooms, corridors).
+ * A submap whose closure the keyframe before kept (confirmed by the
+ * back-end, still in the graph) is tracked: the keyframe's pose in its
+ * anchor's frame is that closure's composed with the graph's motion since,
+ * known to a few centimetres, so test 1 refines from there instead of
+ * searching the window, and test 5 is skipped (the closure tracked passed
+ * it, 0.5 m back). Every max_tracked_in_a_row + 1-th closure of a run is
+ * searched in full again.
  * Then the back-end (CGraphBackend) asks for a second opinion: a closure that
  * passed is held ("awaiting confirmation") until another one, from the same
  * or one of the next confirm_within_keyframes keyframes, asks the graph for
@@ -59,12 +66,14 @@ namespace hslam::graph
 struct TLoopClosureOptions
 {
 	/** Field and query keys (resolution_m, kernel_sigma_m, levels, ...); the
-	 * query reaches 10 m by default (the matcher's own default keeps all). */
+	 * query reaches 10 m and the covariance spans +-2 cells by default (the
+	 * matcher's own defaults: all points, +-4). */
 	TCorrelativeMatcherOptions matcher = closureMatcher();
 	static TCorrelativeMatcherOptions closureMatcher()
 	{
 		TCorrelativeMatcherOptions m;
 		m.max_query_range_m = 10.0;
+		m.covariance_span_cells = 2;  // the surface is sharp: +-2 cells measure what +-4 did
 		return m;
 	}
 	int submap_keyframes = 10;  //!< consecutive keyframes per submap
@@ -110,6 +119,13 @@ struct TLoopClosureOptions
 	 * would tell the graph at least this much (nats; 0 tests every one). */
 	double min_information_gain_nats = 1.0;
 	double closure_xy_std_m = 0.05, closure_yaw_std_rad = mrpt::DEG2RAD(1.0);  //!< typical closure accuracy
+	/** A submap whose closure the keyframe before kept (confirmed, in the
+	 * graph) is verified from where that closure and the front-end's motion
+	 * since put this keyframe: the sub-cell refinement alone instead of the
+	 * window's search, and no second-peak search (the closure it follows
+	 * passed one). Every other test stays. After this many tracked closures
+	 * in a row the next is searched in full again; 0 = never tracked. */
+	int max_tracked_in_a_row = 4;
 
 	template <class V>
 	void visit(V& v)
@@ -148,6 +164,7 @@ struct TLoopClosureOptions
 		v.real("min_information_gain_nats", min_information_gain_nats, 0.0, 100.0);
 		v.real("closure_xy_std_m", closure_xy_std_m, 1e-4, 10.0);
 		v.degrees("closure_yaw_std_deg", closure_yaw_std_rad, 0.01, 90.0);
+		v.integer("max_tracked_in_a_row", max_tracked_in_a_row, 0, 1000);
 	}
 };
 
@@ -165,7 +182,8 @@ struct TLoopClosure
 	size_t query_node = 0, anchor_node = 0, submap = 0;
 	int64_t query_keyframe_id = -1, anchor_keyframe_id = -1;
 	mrpt::math::TPose2D relative;  //!< measured pose of the query in the anchor's frame
-	Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();  //!< of `relative`
+	Eigen::Matrix3d covariance = Eigen::Matrix3d::Identity();  //!< of `relative` (when has_covariance)
+	bool has_covariance = false;  //!< computed: the closure passed every test before the consistency gate
 	mrpt::math::TPose2D query_pose_estimate;  //!< world pose of the query when tested
 	mrpt::math::TPose2D query_pose_matched;  //!< world pose the closure implies (anchor (+) relative)
 	mrpt::math::TPose2D anchor_pose;  //!< world pose of the anchor when tested
@@ -176,6 +194,9 @@ struct TLoopClosure
 	double icp_goodness = 0, icp_shift_m = 0, icp_shift_yaw_rad = 0;
 	double consistency_chi2 = 0;
 	double free_side_fraction = 1;  //!< of the query's wall hits at the matched pose, through the submap's free space
+	/** Verified from the closure of the same submap at the keyframe before
+	 * (max_tracked_in_a_row), not by a search; how many in a row. */
+	int tracked_in_a_row = 0;
 	bool accepted = false;
 	std::string reason;  //!< "accepted" or why not
 	double match_ms = 0;
@@ -207,6 +228,11 @@ class CLoopClosureDetector
 	 * the correction a closure implies. */
 	std::vector<TLoopClosure> detect(size_t node, const CPoseGraph& graph, const TRelativeCovariance& relativeCovariance);
 
+	/** The closures tested at `node` as the back-end kept them (after its
+	 * confirmation and optimiser): the accepted ones are tracked at the next
+	 * keyframe (max_tracked_in_a_row); the tracks of earlier keyframes end. */
+	void keepTracks(size_t node, const std::vector<TLoopClosure>& closures);
+
 	const std::vector<TSubmap>& submaps() const { return m_submaps; }
 	const TOptions& options() const { return m_options; }
 	/** Candidates in range that were not tested: a closure would have told
@@ -219,6 +245,13 @@ class CLoopClosureDetector
    private:
 	struct TCandidate;
 	struct TSubmapField;
+	/** A closure kept at the keyframe before: where it put that keyframe. */
+	struct TClosureTrack
+	{
+		size_t node = 0;
+		mrpt::math::TPose2D relative;  //!< that keyframe in the anchor's frame
+		int in_a_row = 0;  //!< tracked closures ending with this one
+	};
 	std::vector<TCandidate> candidates(size_t node, const CPoseGraph& graph,
 									   const TRelativeCovariance& relativeCovariance);
 	/** The candidates to search now (not skipped after a recent low score). */
@@ -230,6 +263,10 @@ class CLoopClosureDetector
 	TLoopClosure verify(const TCandidate& c, const TSubmapField& field, size_t node, const CPoseGraph& graph) const;
 	bool matchBest(const CCorrelativeScanMatcher& m, const TCandidate& c, TLoopClosure& out,
 				   TCorrelativeMatch& best) const;
+	/** The refinement from where the candidate's track and the graph's
+	 * motion since put the keyframe (no search); the same score tests. */
+	bool matchTracked(const CCorrelativeScanMatcher& m, const TCandidate& c, const CPoseGraph& graph,
+					  TLoopClosure& out, TCorrelativeMatch& best) const;
 	bool checkUniqueness(const CCorrelativeScanMatcher& m, const TCandidate& c, const TCorrelativeMatch& best,
 						 TLoopClosure& out) const;
 	bool checkConsistency(const TCandidate& c, TLoopClosure& out) const;
@@ -251,6 +288,7 @@ class CLoopClosureDetector
 	size_t m_skippedLittleInformation = 0;
 	size_t m_skippedRecentLowScore = 0;
 	std::map<size_t, size_t> m_lowScoreAt;  //!< submap -> keyframe node of its last low-score search
+	std::map<size_t, TClosureTrack> m_tracks;  //!< submap -> the keyframe before's kept closure
 	std::list<std::pair<size_t, std::unique_ptr<TSubmapField>>> m_fieldCache;  //!< most recent first
 	std::unique_ptr<common::CTaskPool> m_pool;  //!< verifies a keyframe's candidates side by side
 };
@@ -263,6 +301,10 @@ class CLoopClosureDetector
  * Near 0 when the graph already knows the relative pose as well as a closure
  * would tell it (just after a closure of the same place). */
 double closureInformationGain(const Eigen::Matrix3d& relative, double closureXyStd_m, double closureYawStd_rad);
+
+/** The largest variance (m^2) of the xy block of a pose covariance: its
+ * worst-constrained direction. */
+double largestXyVariance(const Eigen::Matrix3d& covariance);
 
 /** Whether two verified closures ask `graph` (its current poses) for the same
  * correction: b's measured pose against b's query pose moved by the
