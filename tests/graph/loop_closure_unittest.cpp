@@ -56,6 +56,12 @@ void expectClosuresNearTruth(const TRunResult& r, size_t& accepted)
 		EXPECT_LT(mrpt::RAD2DEG(yaw), 2.0) << "closure " << c.query_keyframe_id << " -> " << c.anchor_keyframe_id;
 	}
 }
+/** The drifted loop through the corridor, run with the given detector options. */
+TRunResult runLoopWith(const TLoopClosureOptions& options)
+{
+	CGraphBackend backend({}, options);
+	return runBackend(loopCorridor(), keyframePath(loopWaypoints()), TFrontEndErrors{}, backend);
+}
 }  // namespace
 
 TEST(LoopClosure, DriftedLoopIsClosedAndAteDrops)
@@ -196,15 +202,11 @@ TEST(LoopClosure, SearchStopsAtTheFirstAcceptedClosureOfAKeyframe)
 	// The same drifted loop matched with every candidate of a keyframe and
 	// with the search ended at its first accepted closure: fewer matches, no
 	// keyframe with two accepted closures, the loop still closed.
-	const auto world = loopCorridor();
 	const auto truth = keyframePath(loopWaypoints());
-	auto run = [&](int maxPerKeyframe) {
-		TLoopClosureOptions lc;
-		lc.max_closures_per_keyframe = maxPerKeyframe;
-		CGraphBackend backend({}, lc);
-		return runBackend(world, truth, TFrontEndErrors{}, backend);
-	};
-	const auto all = run(0), first = run(1);
+	TLoopClosureOptions lc;
+	const auto all = runLoopWith(lc);
+	lc.max_closures_per_keyframe = 1;
+	const auto first = runLoopWith(lc);
 	std::map<size_t, int> acceptedPerQuery;
 	for (const auto& c : first.closures) acceptedPerQuery[c.query_node] += c.accepted ? 1 : 0;
 	for (const auto& [query, n] : acceptedPerQuery) EXPECT_LE(n, 1) << "keyframe " << query;
@@ -223,15 +225,12 @@ TEST(LoopClosure, ClosuresAreTrackedFromTheKeyframeBeforeOnlyAfterConfirmation)
 	// keyframe before kept is verified from that closure (no search, no
 	// second-peak search). Only kept (confirmed) closures are followed, at
 	// most max_tracked_in_a_row in a row, and the loop closes as well.
-	const auto world = loopCorridor();
 	const auto truth = keyframePath(loopWaypoints());
-	auto run = [&](int maxTracked) {
-		TLoopClosureOptions lc;
-		lc.max_tracked_in_a_row = maxTracked;
-		CGraphBackend backend({}, lc);
-		return runBackend(world, truth, TFrontEndErrors{}, backend);
-	};
-	const auto searched = run(0), tracked = run(4);
+	TLoopClosureOptions lc;
+	lc.max_tracked_in_a_row = 0;
+	const auto searched = runLoopWith(lc);
+	lc.max_tracked_in_a_row = 4;
+	const auto tracked = runLoopWith(lc);
 	EXPECT_EQ(TLoopClosureOptions{}.max_tracked_in_a_row, 4);
 	size_t trackedCount = 0, accepted = 0;
 	for (const auto& c : searched.closures) EXPECT_EQ(c.tracked_in_a_row, 0);
