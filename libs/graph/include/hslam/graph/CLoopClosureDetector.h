@@ -125,7 +125,7 @@ struct TLoopClosureOptions
 	 * window's search, and no second-peak search (the closure it follows
 	 * passed one). Every other test stays. After this many tracked closures
 	 * in a row the next is searched in full again; 0 = never tracked. */
-	int max_tracked_in_a_row = 4;
+	int max_tracked_in_a_row = 0;
 
 	template <class V>
 	void visit(V& v)
