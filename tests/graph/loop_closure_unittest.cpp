@@ -222,8 +222,8 @@ TEST(LoopClosure, SearchStopsAtTheFirstAcceptedClosureOfAKeyframe)
 TEST(LoopClosure, ClosuresAreTrackedFromTheKeyframeBeforeOnlyAfterConfirmation)
 {
 	// [loop_closure] max_tracked_in_a_row: a submap whose closure the
-	// keyframe before kept is verified from that closure (no search, no
-	// second-peak search). Only kept (confirmed) closures are followed, at
+	// keyframe before kept is verified from that closure (a search of two
+	// cells and two rotation steps, no second-peak search). Only kept (confirmed) closures are followed, at
 	// most max_tracked_in_a_row in a row, and the loop closes as well.
 	const auto truth = keyframePath(loopWaypoints());
 	TLoopClosureOptions lc;

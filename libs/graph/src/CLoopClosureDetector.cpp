@@ -216,8 +216,9 @@ std::vector<TLoopClosure> CLoopClosureDetector::verifyAll(const std::vector<TCan
 void CLoopClosureDetector::keepTracks(size_t node, const std::vector<TLoopClosure>& closures)
 {
 	std::map<size_t, TClosureTrack> tracks;
-	for (const auto& c : closures)
-		if (c.accepted && c.query_node == node) tracks[c.submap] = TClosureTrack{node, c.relative, c.tracked_in_a_row};
+	if (m_options.max_tracked_in_a_row > 0)  // else nothing is ever tracked
+		for (const auto& c : closures)
+			if (c.accepted && c.query_node == node) tracks[c.submap] = TClosureTrack{node, c.relative, c.tracked_in_a_row};
 	m_tracks = std::move(tracks);
 }
 

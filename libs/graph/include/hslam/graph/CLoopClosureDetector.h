@@ -32,12 +32,13 @@
  *  5. uniqueness: no other pose in the window, its translation widened by
  *     ambiguity_window_factor (outside a small exclusion around the best),
  *     reaches ambiguity_ratio x the best score (repeated rooms, corridors).
- * A submap whose closure the keyframe before kept (confirmed by the
- * back-end, still in the graph) is tracked: the keyframe's pose in its
- * anchor's frame is that closure's composed with the graph's motion since,
- * known to a few centimetres, so test 1 refines from there instead of
- * searching the window, and test 5 is skipped (the closure tracked passed
- * it, 0.5 m back). Every max_tracked_in_a_row + 1-th closure of a run is
+ * With max_tracked_in_a_row > 0 (off by default), a submap whose closure
+ * the keyframe before kept (confirmed by the back-end, still in the graph)
+ * is tracked: the keyframe's pose in its anchor's frame is that closure's
+ * composed with the graph's motion since, known to a few centimetres, so
+ * test 1 searches two cells and two rotation steps around it instead of the
+ * window (CCorrelativeScanMatcher::matchNear), and test 5 is skipped (the
+ * closure tracked passed it, 0.5 m back). Every max_tracked_in_a_row + 1-th closure of a run is
  * searched in full again.
  * Then the back-end (CGraphBackend) asks for a second opinion: a closure that
  * passed is held ("awaiting confirmation") until another one, from the same
@@ -121,8 +122,8 @@ struct TLoopClosureOptions
 	double closure_xy_std_m = 0.05, closure_yaw_std_rad = mrpt::DEG2RAD(1.0);  //!< typical closure accuracy
 	/** A submap whose closure the keyframe before kept (confirmed, in the
 	 * graph) is verified from where that closure and the front-end's motion
-	 * since put this keyframe: the sub-cell refinement alone instead of the
-	 * window's search, and no second-peak search (the closure it follows
+	 * since put this keyframe: a search of two cells and two rotation steps
+	 * instead of the window's, and no second-peak search (the closure it follows
 	 * passed one). Every other test stays. After this many tracked closures
 	 * in a row the next is searched in full again; 0 = never tracked. */
 	int max_tracked_in_a_row = 0;
@@ -263,8 +264,8 @@ class CLoopClosureDetector
 	TLoopClosure verify(const TCandidate& c, const TSubmapField& field, size_t node, const CPoseGraph& graph) const;
 	bool matchBest(const CCorrelativeScanMatcher& m, const TCandidate& c, TLoopClosure& out,
 				   TCorrelativeMatch& best) const;
-	/** The refinement from where the candidate's track and the graph's
-	 * motion since put the keyframe (no search); the same score tests. */
+	/** matchNear() around where the candidate's track and the graph's
+	 * motion since put the keyframe; the same score tests as matchBest(). */
 	bool matchTracked(const CCorrelativeScanMatcher& m, const TCandidate& c, const CPoseGraph& graph,
 					  TLoopClosure& out, TCorrelativeMatch& best) const;
 	bool checkUniqueness(const CCorrelativeScanMatcher& m, const TCandidate& c, const TCorrelativeMatch& best,
