@@ -176,3 +176,38 @@ TEST(BranchAndBound, RotationsFilledOnDemandGiveTheSameSearchAndSkipUnexpandedOn
 			}
 		}
 }
+
+TEST(BranchAndBound, SearchFromTheCentreScoreFindsTheSameLeafScoringFewerNodes)
+{
+	// The search for the best leaf starts from the window centre's score (the
+	// guess): same leaf, ties included, as the search from minScore alone
+	// (which a search with exclusions still is: an exclusion of nothing gives
+	// it), with fewer nodes scored when the guess is near the truth.
+	std::mt19937_64 rng(11);
+	const TPose2D robot{4.0, 3.5, 0.4};
+	CMultiResolutionGrid grid;
+	grid.build(roomSeenFrom(robot, rng), 0.05, 0.05, 7);
+	const std::function<bool(int, int, int)> nothing = [](int, int, int) { return false; };
+	const auto none = std::function<bool(int, int, int)>();
+	size_t fewer = 0, cases = 0;
+	for (const double off_m : {0.0, 0.03, 0.1, 0.3})
+	{
+		const auto query = scanPoints(irregularRoom(), robot, rng);
+		const auto rotations = rotatedQueries(grid, query, {robot.x + off_m, robot.y - off_m, robot.phi + off_m}, 30);
+		for (const float minScore : {0.1f, 0.5f})
+		{
+			const auto fromCentre = detail::branchAndBound(grid, rotations, 10, minScore, none);
+			const auto fromMin = detail::branchAndBound(grid, rotations, 10, minScore, nothing);
+			ASSERT_EQ(fromCentre.found, fromMin.found) << off_m;
+			EXPECT_EQ(fromCentre.best.rotation, fromMin.best.rotation) << off_m;
+			EXPECT_EQ(fromCentre.best.dx, fromMin.best.dx) << off_m;
+			EXPECT_EQ(fromCentre.best.dy, fromMin.best.dy) << off_m;
+			EXPECT_FLOAT_EQ(fromCentre.best.score, fromMin.best.score) << off_m;
+			EXPECT_LE(fromCentre.nodesScored, fromMin.nodesScored + 1) << off_m;  // + the centre itself
+			fewer += fromCentre.nodesScored < fromMin.nodesScored ? 1 : 0;
+			++cases;
+		}
+	}
+	EXPECT_EQ(cases, 8u);
+	EXPECT_GE(fewer, 4u);  // at least where the guess is within a few cells
+}

@@ -81,6 +81,7 @@ void CLoopClosureDetector::addKeyframe(size_t node, const TPointCloud2D& points,
 {
 	m_queryNode = node;
 	m_queryPoints = points;
+	m_query = CCorrelativeScanMatcher::prepareQuery(points, m_options.matcher);
 	m_pending.emplace_back(node, points);
 	if (static_cast<int>(m_pending.size()) >= m_options.submap_keyframes) closeSubmap(graph);
 }

@@ -91,7 +91,12 @@ void CMultiResolutionGrid::poolLevel(int level)
 	next.resize(prev.size());
 	const size_t shift = static_cast<size_t>(half) * W;
 	const size_t innerCells = static_cast<size_t>(std::max(0, m_height - half)) * W;
-	for (size_t i = 0; i < innerCells; ++i) next[i] = std::max(m_rows[i], m_rows[i + shift]);
+	// through raw pointers: a byte stored through next[i] may alias the
+	// vectors' own pointers as far as the compiler knows, which kept this loop
+	// scalar (pooling was 5.5 % of intel's whole process)
+	const uint8_t* rows = m_rows.data();
+	uint8_t* out = next.data();
+	for (size_t i = 0; i < innerCells; ++i) out[i] = std::max(rows[i], rows[i + shift]);
 	std::copy(m_rows.begin() + static_cast<ptrdiff_t>(innerCells), m_rows.end(),
 			  next.begin() + static_cast<ptrdiff_t>(innerCells));
 }

@@ -290,7 +290,21 @@ TSearchResult branchAndBound(const CMultiResolutionGrid& grid, const std::vector
 							 const std::function<bool(int, int, int)>& excluded, bool firstAbove)
 {
 	CSearch s(grid, rotations, fill, windowCells, excluded, firstAbove);
-	auto result = s.search(s.topLevel(minScore), minScore, s.grouped());
+	// A search for the best leaf starts from the score of the window's centre
+	// (the guess): nodes that cannot beat it are pruned from the start
+	// instead of after the first descent. The bound is just below that score,
+	// so the centre leaf itself or a better one is found, and the search
+	// visits the nodes it visited from minScore in the same order: the same
+	// leaf is returned (ties included). Not for an existence test or a
+	// search with exclusions (a second peak must not be the first one).
+	float bound = minScore;
+	if (!excluded && !firstAbove && !rotations.empty())
+	{
+		const detail::TCandidate centre{static_cast<int>(rotations.size() / 2), 0, 0, 0, 0.f};
+		const float centreScore = s.score(centre, minScore);
+		if (centreScore > minScore) bound = std::nextafter(centreScore, 0.f);
+	}
+	auto result = s.search(s.topLevel(bound), bound, s.grouped());
 	result.nodesScored = s.nodesScored;
 	return result;
 }

@@ -44,7 +44,7 @@ bool CLoopClosureDetector::matchBest(const CCorrelativeScanMatcher& m, const TCa
 									  TCorrelativeMatch& best) const
 {
 	const auto guess = relativePose(out.anchor_pose, out.query_pose_estimate);
-	best = m.match(m_queryPoints, guess, c.window, nullptr, m_options.min_score, EMatchOutput::pose_only);
+	best = m.match(m_query, guess, c.window, nullptr, m_options.min_score, EMatchOutput::pose_only);
 	out.score = best.score, out.hit_fraction = best.hit_fraction;
 	if (!best.found || best.score < m_options.min_score) return reject(out, "low score");
 	out.relative = best.pose;
@@ -57,7 +57,7 @@ bool CLoopClosureDetector::matchTracked(const CCorrelativeScanMatcher& m, const 
 {
 	const auto& nodes = graph.nodes();
 	const auto guess = composePose(c.track->relative, relativePose(nodes[c.track->node].pose, nodes[out.query_node].pose));
-	best = m.matchNear(m_queryPoints, guess, m_options.min_score);
+	best = m.matchNear(m_query, guess, m_options.min_score);
 	out.tracked_in_a_row = c.track->in_a_row + 1;
 	out.score = best.score, out.hit_fraction = best.hit_fraction;
 	if (!best.found) return reject(out, "low score");
@@ -76,7 +76,7 @@ bool CLoopClosureDetector::checkUniqueness(const CCorrelativeScanMatcher& m, con
 	const TSearchWindow wider{c.window.xy_m * m_options.ambiguity_window_factor, c.window.yaw_rad};
 	const double scale = thinned ? best.search_score : best.score;
 	const auto second =
-		m.match(m_queryPoints, guess, wider, &near, m_options.ambiguity_ratio * scale, EMatchOutput::pose_only);
+		m.match(m_query, guess, wider, &near, m_options.ambiguity_ratio * scale, EMatchOutput::pose_only);
 	if (!second.found) return true;
 	out.second_score = second.score;
 	return reject(out, "ambiguous");
@@ -156,7 +156,7 @@ TLoopClosure CLoopClosureDetector::verify(const TCandidate& c, const TSubmapFiel
 	if (!c.track && !checkUniqueness(field.matcher, c, best, out)) return finish();
 	// the score-surface covariance only for a closure that passed every test
 	// that does not need it (intel: 259 ambiguous candidates no longer pay it)
-	out.covariance = field.matcher.covarianceOf(m_queryPoints, best);
+	out.covariance = field.matcher.covarianceOf(m_query, best);
 	out.has_covariance = true;
 	if (!checkConsistency(c, out)) return finish();
 	out.accepted = true;

@@ -285,6 +285,7 @@ class CLoopClosureDetector
 	std::vector<TSubmap> m_submaps;
 	std::vector<std::pair<size_t, TPointCloud2D>> m_pending;  //!< nodes of the open submap
 	TPointCloud2D m_queryPoints;  //!< points of the last added keyframe
+	TPreparedQuery m_query;  //!< the same, as every search of its candidates reads them
 	size_t m_queryNode = 0;
 	size_t m_skippedLittleInformation = 0;
 	size_t m_skippedRecentLowScore = 0;
