@@ -46,17 +46,34 @@ std::vector<detail::TRotatedQuery> windowRotations(const mrpt::math::TPose2D& gu
 	return rotations;
 }
 
-/** The query rotated by r.yaw_rad and moved to the guess, as cells of the grid. */
+/** floor(u) as an int, for |u| < 2^31, without a call to std::floor (not
+ * inlined on the x86-64 baseline); u is clamped so that a stray far point
+ * cannot overflow the conversion. */
+inline int floorToInt(double u)
+{
+	u = std::clamp(u, -1e9, 1e9);
+	const int t = static_cast<int>(u);
+	return t - (static_cast<double>(t) > u ? 1 : 0);
+}
+
+/** The query rotated by r.yaw_rad and moved to the guess, as cells of the
+ * grid: grid.cellX / cellY of every point, to the bit (the same operations
+ * in the same order). Filling rotations was 6 % of intel's whole process. */
 void rotatedCells(const CMultiResolutionGrid& grid, const TPointCloud2D& query, const mrpt::math::TPose2D& guess,
 				  detail::TRotatedQuery& r)
 {
 	const double c = std::cos(r.yaw_rad), s = std::sin(r.yaw_rad);
-	r.cx.resize(query.size()), r.cy.resize(query.size());
-	for (size_t i = 0; i < query.size(); ++i)
+	const double x0 = grid.originX_m(), y0 = grid.originY_m(), res = grid.resolution_m();
+	const size_t n = query.size();
+	r.cx.resize(n), r.cy.resize(n);
+	int* cx = r.cx.data();
+	int* cy = r.cy.data();
+	const mrpt::math::TPoint2Df* p = query.data();
+	for (size_t i = 0; i < n; ++i)
 	{
-		const auto& p = query[i];
-		r.cx[i] = grid.cellX(guess.x + c * p.x - s * p.y);
-		r.cy[i] = grid.cellY(guess.y + s * p.x + c * p.y);
+		const double px = p[i].x, py = p[i].y;
+		cx[i] = floorToInt((guess.x + c * px - s * py - x0) / res);
+		cy[i] = floorToInt((guess.y + s * px + c * py - y0) / res);
 	}
 }
 
