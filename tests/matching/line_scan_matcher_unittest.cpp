@@ -34,8 +34,7 @@ matching::TLineScanFrame frameOf(const benchdata::TSyntheticScan& sim)
 	const auto extractor = features::createLineExtractor("derivative", cfg, "line_extraction_derivative");
 	matching::TLineScanFrame f;
 	f.lines = extractor->extract(sim.scan);
-	f.points = hslam::common::makeRangeData(sim.scan).points.xy;
-	f.pointsMap = matching::toPointsMap(f.points);
+	f.setPoints(hslam::common::makeRangeData(sim.scan).points.xy);
 	return f;
 }
 

@@ -22,7 +22,7 @@ namespace
  * isolated points, which constrain both directions) it stays isotropic
  * (issue 12, "long featureless corridor": the isotropic 5 cm made the estimate
  * lose 8 % of the travel along a 200 m simulated corridor). */
-Eigen::Matrix2d translationCovariance(const mrpt::maps::CSimplePointsMap& previousMap,
+Eigen::Matrix2d translationCovariance(const CPointIndex2D& previousPoints,
 									  const std::vector<mrpt::math::TPoint2D>& current, double phi,
 									  const TPointTranslationResult& r)
 {
@@ -30,7 +30,7 @@ Eigen::Matrix2d translationCovariance(const mrpt::maps::CSimplePointsMap& previo
 	const mrpt::poses::CPose2D pose(r.translation_m.x(), r.translation_m.y(), phi);
 	size_t onSurfaces = 0;
 	const Eigen::Matrix3d geo =
-		geometricAlignmentCovariance(previousMap, current, pose, TGeometricCovarianceOptions(), &onSurfaces);
+		geometricAlignmentCovariance(previousPoints, current, pose, TGeometricCovarianceOptions(), &onSurfaces);
 	if (onSurfaces < 10) return Eigen::Matrix2d::Identity() * floor2;  // no walls: isolated points constrain both ways
 	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(geo.topLeftCorner<2, 2>());
 	const Eigen::Vector2d variance = eig.eigenvalues().cwiseMax(floor2);
@@ -38,14 +38,14 @@ Eigen::Matrix2d translationCovariance(const mrpt::maps::CSimplePointsMap& previo
 }
 }  // namespace
 
-TPointTranslationResult estimatePointTranslation(const mrpt::maps::CSimplePointsMap& previousMap,
+TPointTranslationResult estimatePointTranslation(const CPointIndex2D& previousPoints,
 												 const std::vector<mrpt::math::TPoint2D>& current, double phi,
 												 const Eigen::Vector2d& initial, double startGate, double endGate,
 												 int iterations)
 {
 	TPointTranslationResult r;
 	r.translation_m = initial;
-	if (previousMap.size() == 0 || current.empty()) return r;
+	if (previousPoints.empty() || current.empty()) return r;
 	const double c = std::cos(phi), s = std::sin(phi);
 	for (int it = 0; it < iterations; ++it)
 	{
@@ -58,9 +58,11 @@ TPointTranslationResult estimatePointTranslation(const mrpt::maps::CSimplePoints
 		{
 			const double x = c * p.x - s * p.y + r.translation_m.x();
 			const double y = s * p.x + c * p.y + r.translation_m.y();
-			float nx, ny, d2;
-			previousMap.kdTreeClosestPoint2D(static_cast<float>(x), static_cast<float>(y), nx, ny, d2);
+			uint32_t nearest = 0;
+			float d2 = 0;
+			if (previousPoints.nearest(static_cast<float>(x), static_cast<float>(y), 1, &nearest, &d2) == 0) continue;
 			if (d2 > gate * gate) continue;
+			const float nx = previousPoints.x(nearest), ny = previousPoints.y(nearest);
 			const double w = std::exp(-0.5 * d2 / sigma2);
 			sum += w * Eigen::Vector2d(nx - x, ny - y);
 			weightSum += w;
@@ -72,7 +74,7 @@ TPointTranslationResult estimatePointTranslation(const mrpt::maps::CSimplePoints
 		r.inliers = inliers;
 		r.rms_m = std::sqrt(sq / inliers);
 	}
-	r.covariance = translationCovariance(previousMap, current, phi, r);
+	r.covariance = translationCovariance(previousPoints, current, phi, r);
 	return r;
 }
 

@@ -119,8 +119,7 @@ std::vector<mrpt::poses::CPose2D> CLocalMapPoseEstimator::seeds(const common::TR
 	{
 		common::CStageTimer::CScope t(m_timer, "line_extraction");
 		frame.lines = m_extractor->extract(scan);
-		frame.points = scan.points.xy;
-		frame.pointsMap = matching::toPointsMap(frame.points);
+		frame.setPoints(scan.points.xy);
 	}
 	if (m_previousFrame)
 	{
