@@ -34,7 +34,8 @@ matching::TLineScanFrame frameOf(const benchdata::TSyntheticScan& sim)
 	const auto extractor = features::createLineExtractor("derivative", cfg, "line_extraction_derivative");
 	matching::TLineScanFrame f;
 	f.lines = extractor->extract(sim.scan);
-	f.setPoints(hslam::common::makeRangeData(sim.scan).points.xy);
+	f.points = hslam::common::makeRangeData(sim.scan).points.xy;
+	f.pointsMap = matching::toPointsMap(f.points);
 	return f;
 }
 

@@ -38,7 +38,7 @@ std::vector<TPoint2D> moved(const std::vector<TPoint2D>& previous, double phi, d
 TEST(PointTranslation, RecoversAPureShiftInOneStep)
 {
 	const auto previous = grid();
-	const auto map = toPointIndex(previous);
+	const auto map = toPointsMap(previous);
 	const auto r = estimatePointTranslation(map, moved(previous, 0.0, 0.1, 0.05), 0.0, Eigen::Vector2d::Zero(), 0.5,
 											0.2, 3);
 	// Every point has the same residual (0.1, 0.05): the weighted mean is exact.
@@ -58,7 +58,7 @@ TEST(PointTranslation, CorridorAxisIsLeftUnconstrained)
 	// the walls is not observable; across them it is.
 	std::vector<TPoint2D> previous;
 	for (int i = 0; i < 200; ++i) previous.push_back({0.02 * i, -1.0}), previous.push_back({0.02 * i, 1.0});
-	const auto r = estimatePointTranslation(toPointIndex(previous), moved(previous, 0.0, 0.0, 0.05), 0.0,
+	const auto r = estimatePointTranslation(toPointsMap(previous), moved(previous, 0.0, 0.0, 0.05), 0.0,
 											Eigen::Vector2d::Zero(), 0.5, 0.2, 3);
 	EXPECT_NEAR(r.translation_m.y(), 0.05, 1e-3);
 	EXPECT_GT(r.covariance(0, 0), 100.0);  // along the axis: the geometric cap (100 m std)
@@ -69,7 +69,7 @@ TEST(PointTranslation, UsesTheGivenRotation)
 {
 	const auto previous = grid();
 	const double phi = 10 * M_PI / 180;
-	const auto r = estimatePointTranslation(toPointIndex(previous), moved(previous, phi, -0.2, 0.15), phi,
+	const auto r = estimatePointTranslation(toPointsMap(previous), moved(previous, phi, -0.2, 0.15), phi,
 											Eigen::Vector2d::Zero(), 0.5, 0.2, 3);
 	EXPECT_NEAR(r.translation_m.x(), -0.2, 1e-5);
 	EXPECT_NEAR(r.translation_m.y(), 0.15, 1e-5);
@@ -80,7 +80,7 @@ TEST(PointTranslation, PointsOutsideTheGateAreNotInliers)
 	const auto previous = grid();
 	auto current = moved(previous, 0.0, 0.1, 0.0);
 	current.push_back({20.0, 20.0});  // 16 m from the nearest grid point
-	const auto r = estimatePointTranslation(toPointIndex(previous), current, 0.0, Eigen::Vector2d::Zero(), 0.5, 0.2, 2);
+	const auto r = estimatePointTranslation(toPointsMap(previous), current, 0.0, Eigen::Vector2d::Zero(), 0.5, 0.2, 2);
 	EXPECT_EQ(r.inliers, previous.size());
 	EXPECT_NEAR(r.translation_m.x(), 0.1, 1e-5);
 }
@@ -88,7 +88,7 @@ TEST(PointTranslation, PointsOutsideTheGateAreNotInliers)
 TEST(PointTranslation, EmptyInputKeepsTheInitialTranslation)
 {
 	const Eigen::Vector2d initial(0.3, -0.4);
-	const auto r = estimatePointTranslation(toPointIndex({}), grid(), 0.0, initial, 0.5, 0.2, 3);
+	const auto r = estimatePointTranslation(toPointsMap({}), grid(), 0.0, initial, 0.5, 0.2, 3);
 	EXPECT_EQ(r.translation_m, initial);
 	EXPECT_EQ(r.inliers, 0u);
 }

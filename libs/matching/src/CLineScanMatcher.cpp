@@ -1,7 +1,6 @@
 #include <hslam/fusion/se2.h>
 #include <hslam/matching/CLineScanMatcher.h>
 #include <hslam/matching/point_translation.h>
-#include <hslam/matching/scan_points.h>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
@@ -10,13 +9,6 @@
 
 namespace hslam::matching
 {
-void TLineScanFrame::setPoints(std::vector<mrpt::math::TPoint2D> robotFramePoints)
-{
-	points = std::move(robotFramePoints);
-	pointsMap = toPointsMap(points);
-	pointIndex = toPointIndex(points);
-}
-
 using fusion::wrapToPi;
 
 namespace
@@ -182,10 +174,10 @@ TPoseMatch CLineScanMatcher::match(const TLineScanFrame& prev, const TLineScanFr
 	const Eigen::Matrix2d odoTCov = odometryCov.topLeftCorner<2, 2>();
 	TTranslation tr = estimateLineTranslation(prev, cur, pairs, rot, odoT, odoTCov);
 	bool usedPoints = false;
-	if (!cur.points.empty() && !prev.pointIndex.empty() &&
+	if (!cur.points.empty() && prev.pointsMap.size() > 0 &&
 		(static_cast<int>(pairs.size()) < m_options.min_pairs_for_lines || m_options.prefer_closer_to_odometry))
 	{
-		const auto pts = estimatePointTranslation(prev.pointIndex, cur.points, rot.phi_rad, tr.t,
+		const auto pts = estimatePointTranslation(prev.pointsMap, cur.points, rot.phi_rad, tr.t,
 												  m_options.point_start_gate_m, m_options.point_end_gate_m,
 												  m_options.point_iterations);
 		const bool fewLines = static_cast<int>(pairs.size()) < m_options.min_pairs_for_lines;

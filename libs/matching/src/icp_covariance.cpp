@@ -156,15 +156,6 @@ Eigen::Matrix3d geometricAlignmentCovariance(const CPointIndex2D& reference,
 	return mapAlignmentCovariance(TIndexReference{reference}, current, pose, o, matchedPoints);
 }
 
-Eigen::Matrix3d geometricAlignmentCovariance(const CPointIndex2D& reference,
-											 const std::vector<mrpt::math::TPoint2D>& current,
-											 const mrpt::poses::CPose2D& pose,
-											 const TGeometricCovarianceOptions& o, size_t* matchedPoints)
-{
-	return alignmentCovariance(
-		TIndexReference{reference}, current.size(), [&](size_t k) { return current[k]; }, pose, o, matchedPoints);
-}
-
 mrpt::poses::CPose2D refinedAlongNormals(const CPointIndex2D& reference, const mrpt::maps::CSimplePointsMap& current,
 										 mrpt::poses::CPose2D pose, const TGeometricCovarianceOptions& o, int steps)
 {

@@ -22,7 +22,7 @@ namespace
  * isolated points, which constrain both directions) it stays isotropic
  * (issue 12, "long featureless corridor": the isotropic 5 cm made the estimate
  * lose 8 % of the travel along a 200 m simulated corridor). */
-Eigen::Matrix2d translationCovariance(const CPointIndex2D& previousPoints,
+Eigen::Matrix2d translationCovariance(const mrpt::maps::CSimplePointsMap& previousMap,
 									  const std::vector<mrpt::math::TPoint2D>& current, double phi,
 									  const TPointTranslationResult& r)
 {
@@ -30,7 +30,7 @@ Eigen::Matrix2d translationCovariance(const CPointIndex2D& previousPoints,
 	const mrpt::poses::CPose2D pose(r.translation_m.x(), r.translation_m.y(), phi);
 	size_t onSurfaces = 0;
 	const Eigen::Matrix3d geo =
-		geometricAlignmentCovariance(previousPoints, current, pose, TGeometricCovarianceOptions(), &onSurfaces);
+		geometricAlignmentCovariance(previousMap, current, pose, TGeometricCovarianceOptions(), &onSurfaces);
 	if (onSurfaces < 10) return Eigen::Matrix2d::Identity() * floor2;  // no walls: isolated points constrain both ways
 	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(geo.topLeftCorner<2, 2>());
 	const Eigen::Vector2d variance = eig.eigenvalues().cwiseMax(floor2);
@@ -38,14 +38,14 @@ Eigen::Matrix2d translationCovariance(const CPointIndex2D& previousPoints,
 }
 }  // namespace
 
-TPointTranslationResult estimatePointTranslation(const CPointIndex2D& previousPoints,
+TPointTranslationResult estimatePointTranslation(const mrpt::maps::CSimplePointsMap& previousMap,
 												 const std::vector<mrpt::math::TPoint2D>& current, double phi,
 												 const Eigen::Vector2d& initial, double startGate, double endGate,
 												 int iterations)
 {
 	TPointTranslationResult r;
 	r.translation_m = initial;
-	if (previousPoints.empty() || current.empty()) return r;
+	if (previousMap.size() == 0 || current.empty()) return r;
 	const double c = std::cos(phi), s = std::sin(phi);
 	for (int it = 0; it < iterations; ++it)
 	{
@@ -58,11 +58,9 @@ TPointTranslationResult estimatePointTranslation(const CPointIndex2D& previousPo
 		{
 			const double x = c * p.x - s * p.y + r.translation_m.x();
 			const double y = s * p.x + c * p.y + r.translation_m.y();
-			uint32_t nearest = 0;
-			float d2 = 0;
-			if (previousPoints.nearest(static_cast<float>(x), static_cast<float>(y), 1, &nearest, &d2) == 0) continue;
+			float nx, ny, d2;
+			previousMap.kdTreeClosestPoint2D(static_cast<float>(x), static_cast<float>(y), nx, ny, d2);
 			if (d2 > gate * gate) continue;
-			const float nx = previousPoints.x(nearest), ny = previousPoints.y(nearest);
 			const double w = std::exp(-0.5 * d2 / sigma2);
 			sum += w * Eigen::Vector2d(nx - x, ny - y);
 			weightSum += w;
@@ -74,7 +72,7 @@ TPointTranslationResult estimatePointTranslation(const CPointIndex2D& previousPo
 		r.inliers = inliers;
 		r.rms_m = std::sqrt(sq / inliers);
 	}
-	r.covariance = translationCovariance(previousPoints, current, phi, r);
+	r.covariance = translationCovariance(previousMap, current, phi, r);
 	return r;
 }
 

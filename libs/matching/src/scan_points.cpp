@@ -13,16 +13,6 @@ mrpt::maps::CSimplePointsMap toPointsMap(const std::vector<mrpt::math::TPoint2D>
 	return map;
 }
 
-CPointIndex2D toPointIndex(const std::vector<mrpt::math::TPoint2D>& points)
-{
-	std::vector<float> xs, ys;
-	xs.reserve(points.size()), ys.reserve(points.size());
-	for (const auto& p : points) xs.push_back(static_cast<float>(p.x)), ys.push_back(static_cast<float>(p.y));
-	CPointIndex2D index;
-	index.build(std::move(xs), std::move(ys));
-	return index;
-}
-
 std::vector<mrpt::math::TPoint2D> pointsOffGrazingIncidence(const common::TScanPoints& points,
 															 double maxIncidence_rad)
 {

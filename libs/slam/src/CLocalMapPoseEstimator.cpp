@@ -119,7 +119,8 @@ std::vector<mrpt::poses::CPose2D> CLocalMapPoseEstimator::seeds(const common::TR
 	{
 		common::CStageTimer::CScope t(m_timer, "line_extraction");
 		frame.lines = m_extractor->extract(scan);
-		frame.setPoints(scan.points.xy);
+		frame.points = scan.points.xy;
+		frame.pointsMap = matching::toPointsMap(frame.points);
 	}
 	if (m_previousFrame)
 	{

@@ -159,9 +159,10 @@ matching::TLineScanFrame CScanMatchingPoseEstimator::makeFrame(const common::TRa
 	// the scan's points at grazing incidence are not aligned; the keyframes
 	// keep them as reference (addKeyframeIfDue), where another view's dense
 	// points of the same wall may be their partners
-	frame.setPoints(matching::everyKthPoint(
+	frame.points = matching::everyKthPoint(
 		matching::pointsOffGrazingIncidence(scan.points, m_icp.options().max_incidence_rad),
-		static_cast<size_t>(m_options.max_match_points)));
+		static_cast<size_t>(m_options.max_match_points));
+	frame.pointsMap = matching::toPointsMap(frame.points);
 	if (usesLines())
 	{
 		common::CStageTimer::CScope t(m_timer, "line_extraction");

@@ -26,7 +26,6 @@
 #pragma once
 
 #include <hslam/features/line_segment.h>
-#include <hslam/matching/CPointIndex2D.h>
 #include <hslam/matching/line_pairing.h>
 #include <hslam/matching/match_result.h>
 #include <mrpt/maps/CSimplePointsMap.h>
@@ -42,11 +41,7 @@ struct TLineScanFrame
 {
 	features::TLineSegmentList lines;  //!< robot frame
 	std::vector<mrpt::math::TPoint2D> points;  //!< valid points, robot frame (for the point fallback)
-	mrpt::maps::CSimplePointsMap pointsMap;  //!< the same points as an MRPT map (ICP's current cloud)
-	CPointIndex2D pointIndex;  //!< the same points, nearest neighbours of the point fallback
-
-	/** Sets `points` and both of their views. */
-	void setPoints(std::vector<mrpt::math::TPoint2D> robotFramePoints);
+	mrpt::maps::CSimplePointsMap pointsMap;  //!< the same points, k-d tree for the fallback
 };
 
 class CLineScanMatcher

@@ -64,12 +64,6 @@ Eigen::Matrix3d geometricAlignmentCovariance(const CPointIndex2D& reference,
 											 const mrpt::poses::CPose2D& pose,
 											 const TGeometricCovarianceOptions& options, size_t* matchedPoints = nullptr);
 
-/** The same with the reference in a CPointIndex2D and current points in the robot frame. */
-Eigen::Matrix3d geometricAlignmentCovariance(const CPointIndex2D& reference,
-											 const std::vector<mrpt::math::TPoint2D>& current,
-											 const mrpt::poses::CPose2D& pose,
-											 const TGeometricCovarianceOptions& options, size_t* matchedPoints = nullptr);
-
 /** `pose` moved by up to `steps` damped Gauss-Newton steps on the same
  * point-to-line residuals (each point along its reference normal).
  * Point-to-point ICP on walls sampled every few centimetres has fixed points

@@ -2,11 +2,11 @@
  * iii): with the rotation already known, rotate the points of one frame and
  * find the translation that brings them onto the other frame's points, with
  * a Gaussian weight that rules out bad pairs. Done here as a few iterations of
- * nearest-neighbour association (bucket grid, CPointIndex2D) with a shrinking gate; used when
+ * nearest-neighbour association (k-d tree) with a shrinking gate; used when
  * too few lines pair for the line-based least squares. */
 #pragma once
 
-#include <hslam/matching/CPointIndex2D.h>
+#include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/math/TPoint2D.h>
 
 #include <Eigen/Core>
@@ -25,7 +25,7 @@ struct TPointTranslationResult
 
 /** Translation t such that R(phi) * current + t lands on `previousMap`,
  * starting from `initialTranslation`. Gate shrinks from startGate_m to endGate_m. */
-TPointTranslationResult estimatePointTranslation(const CPointIndex2D& previousPoints,
+TPointTranslationResult estimatePointTranslation(const mrpt::maps::CSimplePointsMap& previousMap,
 												 const std::vector<mrpt::math::TPoint2D>& current, double phi_rad,
 												 const Eigen::Vector2d& initialTranslation, double startGate_m,
 												 double endGate_m, int iterations);

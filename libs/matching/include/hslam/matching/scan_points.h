@@ -4,7 +4,6 @@
 #pragma once
 
 #include <hslam/common/range_data.h>
-#include <hslam/matching/CPointIndex2D.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/math/TPoint2D.h>
 
@@ -13,8 +12,6 @@
 namespace hslam::matching
 {
 mrpt::maps::CSimplePointsMap toPointsMap(const std::vector<mrpt::math::TPoint2D>& points);
-/** The same points in a bucket grid (exact nearest neighbours, CPointIndex2D). */
-CPointIndex2D toPointIndex(const std::vector<mrpt::math::TPoint2D>& points);
 
 /** The points of a scan without those seen at grazing incidence. A surface
  * seen at incidence a (from its normal) is sampled every r dtheta / cos(a)
