@@ -23,6 +23,7 @@ TSplitQuery splitQuery(const CMultiResolutionGrid& grid, const TRotatedQuery& q,
 {
 	TSplitQuery out;
 	out.count = q.cx.size();
+	out.flat.reserve(q.cx.size());  // most points are inside: one allocation, not a doubling series
 	const int W = grid.width(), H = grid.height();
 	for (size_t i = 0; i < q.cx.size(); ++i)
 	{
