@@ -46,9 +46,9 @@ std::vector<detail::TRotatedQuery> windowRotations(const mrpt::math::TPose2D& gu
 	return rotations;
 }
 
-/** floor(u) as an int, for |u| < 2^31, without a call to std::floor (not
- * inlined on the x86-64 baseline); u is clamped so that a stray far point
- * cannot overflow the conversion. */
+/** floor(u) as an int: truncation, minus one below zero (the same value as
+ * static_cast<int>(std::floor(u)) for |u| < 2^31, in fewer instructions); u
+ * is clamped so that a stray far point cannot overflow the conversion. */
 inline int floorToInt(double u)
 {
 	u = std::clamp(u, -1e9, 1e9);
@@ -58,7 +58,9 @@ inline int floorToInt(double u)
 
 /** The query rotated by r.yaw_rad and moved to the guess, as cells of the
  * grid: grid.cellX / cellY of every point, to the bit (the same operations
- * in the same order). Filling rotations was 6 % of intel's whole process. */
+ * in the same order), with the grid's origin and resolution read once.
+ * Filling rotations was 6.1 % of intel's whole process, 5.0 % so (paired
+ * CPU 0.978). */
 void rotatedCells(const CMultiResolutionGrid& grid, const TPointCloud2D& query, const mrpt::math::TPose2D& guess,
 				  detail::TRotatedQuery& r)
 {
