@@ -21,6 +21,24 @@ graph::TPointCloud2D toCloud(const mrpt::maps::CSimplePointsMap& map)
 }
 }  // namespace
 
+CGapSearch::CGapSearch(const TGapSearchOptions& options)
+	: m_options(options),
+	  m_afterGap(matcherOptions(ESearchKind::after_gap)),
+	  m_afterPoorMatch(matcherOptions(ESearchKind::after_poor_match))
+{
+}
+
+graph::TCorrelativeMatcherOptions CGapSearch::matcherOptions(ESearchKind kind) const
+{
+	graph::TCorrelativeMatcherOptions o;
+	o.resolution_m = m_options.resolution_m;
+	o.kernel_sigma_m = m_options.kernel_sigma_m;
+	o.min_score = m_options.min_score;
+	// both scans lie in their scanner's frame: one range rule
+	o.max_query_range_m = kind == ESearchKind::after_poor_match ? m_options.slip_max_range_m : m_options.max_range_m;
+	return o;
+}
+
 graph::TSearchWindow CGapSearch::cappedWindow(const Eigen::Matrix3d& motionCov) const
 {
 	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(motionCov.topLeftCorner<2, 2>());
@@ -54,15 +72,9 @@ std::optional<graph::TSearchWindow> CGapSearch::slipWindowFor(const Eigen::Matri
 std::optional<mrpt::poses::CPose2D> CGapSearch::search(const mrpt::maps::CSimplePointsMap& previous,
 														const mrpt::maps::CSimplePointsMap& scan,
 														const mrpt::poses::CPose2D& guess,
-														const graph::TSearchWindow& window, ESearchKind kind) const
+														const graph::TSearchWindow& window, ESearchKind kind)
 {
-	graph::TCorrelativeMatcherOptions o;
-	o.resolution_m = m_options.resolution_m;
-	o.kernel_sigma_m = m_options.kernel_sigma_m;
-	o.min_score = m_options.min_score;
-	// both scans lie in their scanner's frame: one range rule
-	o.max_query_range_m = kind == ESearchKind::after_poor_match ? m_options.slip_max_range_m : m_options.max_range_m;
-	graph::CCorrelativeScanMatcher matcher(o);
+	graph::CCorrelativeScanMatcher& matcher = kind == ESearchKind::after_poor_match ? m_afterPoorMatch : m_afterGap;
 	const graph::TPointCloud2D reference = matcher.filteredQuery(toCloud(previous));
 	if (reference.size() < 10) return std::nullopt;
 	matcher.setReference(reference);

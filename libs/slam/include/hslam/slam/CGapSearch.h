@@ -101,7 +101,7 @@ enum class ESearchKind
 class CGapSearch
 {
    public:
-	explicit CGapSearch(const TGapSearchOptions& options = {}) : m_options(options) {}
+	explicit CGapSearch(const TGapSearchOptions& options = {});
 	const TGapSearchOptions& options() const { return m_options; }
 
 	/** The window (half-widths) for a prior of covariance `motionCov`
@@ -115,17 +115,22 @@ class CGapSearch
 	/** Pose of the current scan (robot-frame points `scan`) relative to the
 	 * previous one (robot-frame points `previous`), best in `window` around
 	 * `guess` (the predicted relative motion); nullopt if nothing scores
-	 * min_score. */
+	 * min_score. Not const: each kind of search keeps its matcher (field
+	 * buffers and log table) from one search to the next. */
 	std::optional<mrpt::poses::CPose2D> search(const mrpt::maps::CSimplePointsMap& previous,
 											   const mrpt::maps::CSimplePointsMap& scan, const mrpt::poses::CPose2D& guess,
 											   const graph::TSearchWindow& window,
-											   ESearchKind kind = ESearchKind::after_gap) const;
+											   ESearchKind kind = ESearchKind::after_gap);
 
    private:
 	/** Half-widths of window_sigmas standard deviations of `motionCov`, capped. */
 	graph::TSearchWindow cappedWindow(const Eigen::Matrix3d& motionCov) const;
 
+	/** The matcher's options for one kind of search (the range cut differs). */
+	graph::TCorrelativeMatcherOptions matcherOptions(ESearchKind kind) const;
+
 	TGapSearchOptions m_options;
+	graph::CCorrelativeScanMatcher m_afterGap, m_afterPoorMatch;
 };
 
 }  // namespace hslam::slam
