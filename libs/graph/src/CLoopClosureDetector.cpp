@@ -179,15 +179,28 @@ std::vector<CLoopClosureDetector::TCandidate> CLoopClosureDetector::searched(
 		// Seen from a keyframe 0.5 m away, a submap that matched nowhere in
 		// its window rarely matches now; its slot is not handed to a farther
 		// candidate (that would cost the same and overlap less).
-		const auto low = m_lowScoreAt.find(c.submap);
-		if (low != m_lowScoreAt.end() &&
-			node < low->second + static_cast<size_t>(m_options.retest_low_score_after_keyframes))
+		if (within(m_lowScoreAt, c.submap, node, m_options.retest_low_score_after_keyframes))
 			++m_skippedRecentLowScore;
+		// The widest window means the prior no longer bounds the search:
+		// approaching an old place after a long loop, keyframe after keyframe
+		// finds nothing there until the overlap suffices, each search costing
+		// 5-20x a narrow one (Cartographer likewise runs its searches over a
+		// whole submap less often than its local ones).
+		else if (isWide(c) && within(m_wideMissAt, c.submap, node, m_options.retest_wide_after_keyframes))
+			++m_skippedRecentWide;
 		else
 			out.push_back(c);
 	}
 	return out;
 }
+
+bool CLoopClosureDetector::within(const std::map<size_t, size_t>& lastAt, size_t submap, size_t node, int keyframes)
+{
+	const auto last = lastAt.find(submap);
+	return last != lastAt.end() && node < last->second + static_cast<size_t>(keyframes);
+}
+
+bool CLoopClosureDetector::isWide(const TCandidate& c) const { return c.window.xy_m >= m_options.max_window_xy_m; }
 
 std::vector<TLoopClosure> CLoopClosureDetector::verifyAll(const std::vector<TCandidate>& cands, size_t node,
 														  const CPoseGraph& graph)
@@ -234,6 +247,7 @@ std::vector<TLoopClosure> CLoopClosureDetector::detect(size_t node, const CPoseG
 	for (size_t k = 0; k < out.size(); ++k)
 	{
 		if (out[k].reason == "low score") m_lowScoreAt[out[k].submap] = node;
+		if (!out[k].accepted && out[k].window_xy_m >= m_options.max_window_xy_m) m_wideMissAt[out[k].submap] = node;
 		accepted += out[k].accepted ? 1 : 0;
 		if (m_options.max_closures_per_keyframe > 0 && accepted >= m_options.max_closures_per_keyframe)
 		{

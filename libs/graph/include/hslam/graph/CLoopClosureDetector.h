@@ -85,6 +85,12 @@ struct TLoopClosureOptions
 	 * from the next this-many-minus-one keyframes (its slot among
 	 * max_candidates stays spent); 1 = every time. */
 	int retest_low_score_after_keyframes = 1;
+	/** A submap whose search over the widest window (the translation window
+	 * clamped at max_window_xy_m: the prior no longer bounds where the
+	 * keyframe is) was not accepted is not searched over it again from the
+	 * next this-many-minus-one keyframes (its slot stays spent); 1 = every
+	 * time. Such searches cost 5-20x a narrow one. */
+	int retest_wide_after_keyframes = 1;
 	/** A search stops once this many of its candidates were accepted (the
 	 * rest, farther away, add little once the keyframe is tied to the old
 	 * map); 0 = every candidate is matched. */
@@ -137,6 +143,7 @@ struct TLoopClosureOptions
 		v.integer("detect_every_n_keyframes", detect_every_n_keyframes, 1, 1000);
 		v.integer("max_candidates", max_candidates, 1, 100);
 		v.integer("retest_low_score_after_keyframes", retest_low_score_after_keyframes, 1, 1000);
+		v.integer("retest_wide_after_keyframes", retest_wide_after_keyframes, 1, 1000);
 		v.integer("max_closures_per_keyframe", max_closures_per_keyframe, 0, 100);
 		v.real("overlap_distance_m", overlap_distance_m, 0.0, 100.0);
 		v.real("window_sigmas", window_sigmas, 0.0, 100.0);
@@ -242,6 +249,9 @@ class CLoopClosureDetector
 	/** Candidates not searched: their last search, a few keyframes ago, ended
 	 * with a low score (retest_low_score_after_keyframes). */
 	size_t skippedRecentLowScore() const { return m_skippedRecentLowScore; }
+	/** Candidates not searched: their last search over the widest window, a
+	 * few keyframes ago, was not accepted (retest_wide_after_keyframes). */
+	size_t skippedRecentWide() const { return m_skippedRecentWide; }
 
    private:
 	struct TCandidate;
@@ -255,9 +265,14 @@ class CLoopClosureDetector
 	};
 	std::vector<TCandidate> candidates(size_t node, const CPoseGraph& graph,
 									   const TRelativeCovariance& relativeCovariance);
-	/** The candidates to search now (not skipped after a recent low score). */
+	/** The candidates to search now (not skipped after a recent low score
+	 * or a recent refused search over the widest window). */
 	std::vector<TCandidate> searched(size_t node, const CPoseGraph& graph,
 									 const TRelativeCovariance& relativeCovariance);
+	/** Whether lastAt holds `submap` at a node less than `keyframes` before `node`. */
+	static bool within(const std::map<size_t, size_t>& lastAt, size_t submap, size_t node, int keyframes);
+	/** Whether the candidate's translation window is the widest one (clamped). */
+	bool isWide(const TCandidate& c) const;
 	/** verify() of every candidate, at most max_cached_fields at a time (their
 	 * fields stay cached while the pool's threads read them). */
 	std::vector<TLoopClosure> verifyAll(const std::vector<TCandidate>& cands, size_t node, const CPoseGraph& graph);
@@ -290,6 +305,8 @@ class CLoopClosureDetector
 	size_t m_skippedLittleInformation = 0;
 	size_t m_skippedRecentLowScore = 0;
 	std::map<size_t, size_t> m_lowScoreAt;  //!< submap -> keyframe node of its last low-score search
+	size_t m_skippedRecentWide = 0;
+	std::map<size_t, size_t> m_wideMissAt;  //!< submap -> keyframe node of its last refused widest search
 	std::map<size_t, TClosureTrack> m_tracks;  //!< submap -> the keyframe before's kept closure
 	std::list<std::pair<size_t, std::unique_ptr<TSubmapField>>> m_fieldCache;  //!< most recent first
 	std::unique_ptr<common::CTaskPool> m_pool;  //!< verifies a keyframe's candidates side by side
