@@ -18,6 +18,9 @@
  * With a ground truth (-g, paired with -r by order; else ground_truth.tum or
  * <stem>.tum beside the rawlog) the ATE RMSE of both is printed, and of raw
  * odometry (hslam-process with pose_estimation.method = odometry, not timed).
+ * Our loop-closure keyframes (summary.json) and CPU ms per keyframe are
+ * printed too (`pipeline_<log>_pipeline_ms_per_keyframe=`): a log with a
+ * scan every 1-3 s makes every scan a keyframe, a 10 Hz one every 4th-13th.
  * icp-slam's path (log_estimated_path.txt, one pose per rawlog step) is
  * mapped to the scans' timestamps by reading the rawlog step by step with
  * the same MRPT call icp-slam uses. Runs and trajectories stay in --out. */
@@ -41,6 +44,7 @@
 #include <iomanip>
 #include <iostream>
 #include <optional>
+#include <regex>
 #include <sstream>
 
 namespace hslam::bench
@@ -83,7 +87,29 @@ struct TBenchRow
 	TProgramTimes ours, icp;
 	std::optional<double> ate_odometry_m, ate_ours_m, ate_icp_m;
 	std::string icp_note;
+	std::optional<size_t> keyframes;  //!< our loop-closure keyframes (summary.json), if the back-end ran
+	/** Our CPU ms per keyframe (start-up excluded): each keyframe runs ICP and
+	 * a loop-closure search, so a log with a scan every 1-3 s, where every
+	 * scan is a keyframe, costs per scan what a 10 Hz log costs per keyframe. */
+	std::optional<double> oursMsPerKeyframe() const
+	{
+		if (!keyframes || *keyframes == 0) return std::nullopt;
+		return 1000.0 * (ours.full_s - ours.prefix_s) / static_cast<double>(*keyframes);
+	}
 };
+
+/** The loop-closure keyframes in an hslam-process summary.json, if any. */
+std::optional<size_t> keyframesIn(const std::string& summaryJson)
+{
+	std::ifstream in(summaryJson);
+	std::stringstream text;
+	text << in.rdbuf();
+	static const std::regex kKeyframes("\"keyframes\": *([0-9]+)");
+	std::smatch m;
+	const std::string s = text.str();
+	if (!std::regex_search(s, m, kKeyframes)) return std::nullopt;
+	return static_cast<size_t>(std::stoul(m[1].str()));
+}
 
 std::string findGroundTruth(const std::string& rawlog)
 {
@@ -209,6 +235,7 @@ TBenchRow benchOneRawlog(const TBenchSetup& setup, TBenchRawlog log)
 		row.icp.keepBest(icpFullRun, icpPrefixRun);
 	}
 	std::cerr << "\n";
+	row.keyframes = keyframesIn(dir + "/hslam/summary.json");
 	if (!log.ground_truth.empty())
 	{
 		childCpuSeconds(processCommand(setup, log.path, dir + "/odometry", " --set pose_estimation.method=odometry"),
@@ -241,9 +268,10 @@ std::string fixedOrDash(const std::optional<double>& v, int digits)
 void printTable(const std::vector<TBenchRow>& rows)
 {
 	std::cout << "\nWhole-process CPU ms per scan (start-up excluded: minus a 1-scan run), wall ms per scan the same "
-				 "way, ATE RMSE (m)\n";
+				 "way, ATE RMSE (m); keyframes of our loop-closure back-end and our CPU ms per keyframe\n";
 	const CReportTable table(std::cout, {{"rawlog", 26, true},
 										 {"scans", 7},
+										 {"keyfr", 7},
 										 {"ours ms", 10},
 										 {"icp ms", 10},
 										 {"speedup", 9},
@@ -252,16 +280,21 @@ void printTable(const std::vector<TBenchRow>& rows)
 										 {"ATE odo", 10},
 										 {"ATE ours", 10},
 										 {"ATE icp", 10},
+										 {"ours/kf", 9},
 										 {"", 0, true}});
 	table.printHeader();
 	for (const auto& r : rows)
 	{
 		const double ours = r.ours.msPerScan(r.log.scans), icp = r.icp.msPerScan(r.log.scans);
-		table.printRow({r.log.name.substr(0, 25), std::to_string(r.log.scans), fixedOrDash(ours, 3), fixedOrDash(icp, 3),
+		const std::optional<double> keyframes =
+			r.keyframes ? std::optional<double>(static_cast<double>(*r.keyframes)) : std::nullopt;
+		table.printRow({r.log.name.substr(0, 25), std::to_string(r.log.scans), fixedOrDash(keyframes, 0),
+						fixedOrDash(ours, 3), fixedOrDash(icp, 3),
 						fixedOrDash(icp / ours, 2), fixedOrDash(r.ours.wallMsPerScan(r.log.scans), 3),
 						fixedOrDash(r.icp.wallMsPerScan(r.log.scans), 3), fixedOrDash(r.ate_odometry_m, 3),
 						fixedOrDash(r.ate_ours_m, 3),
-						fixedOrDash(r.ate_icp_m, 3), r.icp_note.empty() ? "" : "  icp-slam: " + r.icp_note});
+						fixedOrDash(r.ate_icp_m, 3), fixedOrDash(r.oursMsPerKeyframe(), 2),
+						r.icp_note.empty() ? "" : "  icp-slam: " + r.icp_note});
 	}
 }
 
@@ -282,6 +315,8 @@ void printKeyValues(const std::vector<TBenchRow>& rows)
 		if (r.ate_ours_m) keys(k + "pipeline_ate_m", *r.ate_ours_m);
 		if (r.ate_icp_m) keys(k + "icp_slam_ate_m", *r.ate_icp_m);
 		if (r.ate_odometry_m) keys(k + "odometry_ate_m", *r.ate_odometry_m);
+		if (const auto perKeyframe = r.oursMsPerKeyframe())
+			keys(k + "keyframes", static_cast<double>(*r.keyframes))(k + "pipeline_ms_per_keyframe", *perKeyframe);
 		const double n = static_cast<double>(r.log.scans - 1);
 		oursMs += ours * n, icpMs += icp * n, intervals += n;
 		oursWallMs += oursWall * n, icpWallMs += icpWall * n;

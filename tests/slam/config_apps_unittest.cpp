@@ -181,3 +181,40 @@ TEST(ConfigApps, BenchPassesItsOverridesToEveryRun)
 	EXPECT_NE(readText(dir.file("out") + "/lab/hslam/config_used.ini").find("[loop_closure]\nenabled = false"),
 			  std::string::npos);
 }
+
+TEST(ConfigApps, BenchPrintsOurKeyframesAndTheirCost)
+{
+	// The keyframes are the back-end's (summary.json), and the cost per
+	// keyframe is the same CPU as the cost per scan, divided differently.
+	hslam::testing::CTempDir dir;
+	const std::string lab = dir.file("lab.rawlog");
+	ASSERT_EQ(run("rawlog-edit --cut --from-index 0 --to-index 600 -q -i '" + kSource +
+					  "/rawlog_samples/lab/sim.rawlog' -o '" + lab + "'",
+				  dir.file("err.txt")),
+			  0);
+	ASSERT_EQ(hslam::testing::runCommand("cd '" + kSource + "' && " + kBin + "/hslam-bench pipeline -r '" + lab +
+										 "' -g - -n 1 --set pose_estimation.method=odometry --out '" +
+										 dir.file("out") + "' > '" + dir.file("keys.txt") + "' 2> '" +
+										 dir.file("err.txt") + "'"),
+			  0)
+		<< readText(dir.file("err.txt"));
+	const std::string keys = readText(dir.file("keys.txt"));
+	const auto value = [&](const std::string& key)
+	{
+		const size_t at = keys.find("\n" + key + "=");
+		return at == std::string::npos ? -1.0 : std::stod(keys.substr(at + key.size() + 2));
+	};
+	const std::string summary = readText(dir.file("out") + "/lab/hslam/summary.json");
+	const size_t at = summary.find("\"keyframes\": ");
+	ASSERT_NE(at, std::string::npos);
+	const double keyframes = std::stod(summary.substr(at + 13));
+	EXPECT_GT(keyframes, 2.0);
+	EXPECT_EQ(value("pipeline_lab_keyframes"), keyframes);
+	// summary.json counts the scans too
+	const size_t scansAt = summary.find("\"scans\": ");
+	ASSERT_NE(scansAt, std::string::npos);
+	const double scans = std::stod(summary.substr(scansAt + 9));
+	EXPECT_NEAR(value("pipeline_lab_pipeline_ms_per_keyframe"),
+				value("pipeline_lab_pipeline_ms_per_scan") * (scans - 1) / keyframes,
+				1e-3 * value("pipeline_lab_pipeline_ms_per_keyframe"));
+}
