@@ -336,7 +336,7 @@ TEST(LoopClosure, IdenticalRoomIsNotTakenForTheOther)
 	// a search wide enough to see room A from room B (as after a large drift)
 	TLoopClosureOptions lc;
 	lc.overlap_distance_m = 20.0;
-	lc.min_window_xy_m = lc.max_window_xy_m = 4.0;
+	lc.min_window_xy_m = lc.max_window_xy_m = 16.0;
 	lc.detect_every_n_keyframes = 2;
 	CGraphBackend backend({}, lc);
 	const auto r = runBackend(world, truth, TFrontEndErrors{}, backend, 3);

@@ -186,7 +186,7 @@ std::vector<CLoopClosureDetector::TCandidate> CLoopClosureDetector::searched(
 		// finds nothing there until the overlap suffices, each search costing
 		// 5-20x a narrow one (Cartographer likewise runs its searches over a
 		// whole submap less often than its local ones).
-		else if (isWide(c) && within(m_wideMissAt, c.submap, node, m_options.retest_wide_after_keyframes))
+		else if (isWide(c.window.xy_m) && within(m_wideMissAt, c.submap, node, m_options.retest_wide_after_keyframes))
 			++m_skippedRecentWide;
 		else
 			out.push_back(c);
@@ -200,7 +200,7 @@ bool CLoopClosureDetector::within(const std::map<size_t, size_t>& lastAt, size_t
 	return last != lastAt.end() && node < last->second + static_cast<size_t>(keyframes);
 }
 
-bool CLoopClosureDetector::isWide(const TCandidate& c) const { return c.window.xy_m >= m_options.max_window_xy_m; }
+bool CLoopClosureDetector::isWide(double window_xy_m) const { return window_xy_m >= m_options.max_window_xy_m; }
 
 std::vector<TLoopClosure> CLoopClosureDetector::verifyAll(const std::vector<TCandidate>& cands, size_t node,
 														  const CPoseGraph& graph)
@@ -247,7 +247,7 @@ std::vector<TLoopClosure> CLoopClosureDetector::detect(size_t node, const CPoseG
 	for (size_t k = 0; k < out.size(); ++k)
 	{
 		if (out[k].reason == "low score") m_lowScoreAt[out[k].submap] = node;
-		if (!out[k].accepted && out[k].window_xy_m >= m_options.max_window_xy_m) m_wideMissAt[out[k].submap] = node;
+		if (!out[k].accepted && isWide(out[k].window_xy_m)) m_wideMissAt[out[k].submap] = node;
 		accepted += out[k].accepted ? 1 : 0;
 		if (m_options.max_closures_per_keyframe > 0 && accepted >= m_options.max_closures_per_keyframe)
 		{

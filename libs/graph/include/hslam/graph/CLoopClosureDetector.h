@@ -271,8 +271,8 @@ class CLoopClosureDetector
 									 const TRelativeCovariance& relativeCovariance);
 	/** Whether lastAt holds `submap` at a node less than `keyframes` before `node`. */
 	static bool within(const std::map<size_t, size_t>& lastAt, size_t submap, size_t node, int keyframes);
-	/** Whether the candidate's translation window is the widest one (clamped). */
-	bool isWide(const TCandidate& c) const;
+	/** Whether a translation window is the widest one (clamped at max_window_xy_m). */
+	bool isWide(double window_xy_m) const;
 	/** verify() of every candidate, at most max_cached_fields at a time (their
 	 * fields stay cached while the pool's threads read them). */
 	std::vector<TLoopClosure> verifyAll(const std::vector<TCandidate>& cands, size_t node, const CPoseGraph& graph);
