@@ -26,7 +26,7 @@ void printLoopClosureTiming(const CLoopClosureStage& stage, std::ostream& out)
 		<< ", rejected " << rejected << ")\n"
 		<< "  not tested, little information: " << stage.backend().detector().skippedLittleInformation() << "\n"
 		<< "  not tested, low score just before: " << stage.backend().detector().skippedRecentLowScore() << "\n"
-		<< "  not tested, widest search refused just before: " << stage.backend().detector().skippedRecentWide()
+		<< "  not tested, widest search low score just before: " << stage.backend().detector().skippedRecentWide()
 		<< "\n"
 		<< "  optimisations:          " << t.optimizations << " (closures that agreed and waited for one: "
 		<< t.closures_deferred << ")\n"

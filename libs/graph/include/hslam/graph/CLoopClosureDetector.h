@@ -87,10 +87,10 @@ struct TLoopClosureOptions
 	int retest_low_score_after_keyframes = 1;
 	/** A submap whose search over the widest window (the translation window
 	 * clamped at max_window_xy_m: the prior no longer bounds where the
-	 * keyframe is) was not accepted is not searched over it again from the
-	 * next this-many-minus-one keyframes (its slot stays spent); 1 = every
-	 * time. Such searches cost 5-20x a narrow one. */
-	int retest_wide_after_keyframes = 1;
+	 * keyframe is) ended with a low score is not searched over it again from
+	 * the next this-many-minus-one keyframes (its slot stays spent); 1 =
+	 * every time. Such searches cost 5-20x a narrow one. */
+	int retest_wide_after_keyframes = 2;
 	/** A search stops once this many of its candidates were accepted (the
 	 * rest, farther away, add little once the keyframe is tied to the old
 	 * map); 0 = every candidate is matched. */
@@ -250,7 +250,7 @@ class CLoopClosureDetector
 	 * with a low score (retest_low_score_after_keyframes). */
 	size_t skippedRecentLowScore() const { return m_skippedRecentLowScore; }
 	/** Candidates not searched: their last search over the widest window, a
-	 * few keyframes ago, was not accepted (retest_wide_after_keyframes). */
+	 * few keyframes ago, ended with a low score (retest_wide_after_keyframes). */
 	size_t skippedRecentWide() const { return m_skippedRecentWide; }
 
    private:
@@ -266,7 +266,7 @@ class CLoopClosureDetector
 	std::vector<TCandidate> candidates(size_t node, const CPoseGraph& graph,
 									   const TRelativeCovariance& relativeCovariance);
 	/** The candidates to search now (not skipped after a recent low score
-	 * or a recent refused search over the widest window). */
+	 * or a recent low-score search over the widest window). */
 	std::vector<TCandidate> searched(size_t node, const CPoseGraph& graph,
 									 const TRelativeCovariance& relativeCovariance);
 	/** Whether lastAt holds `submap` at a node less than `keyframes` before `node`. */
@@ -306,7 +306,7 @@ class CLoopClosureDetector
 	size_t m_skippedRecentLowScore = 0;
 	std::map<size_t, size_t> m_lowScoreAt;  //!< submap -> keyframe node of its last low-score search
 	size_t m_skippedRecentWide = 0;
-	std::map<size_t, size_t> m_wideMissAt;  //!< submap -> keyframe node of its last refused widest search
+	std::map<size_t, size_t> m_wideLowScoreAt;  //!< submap -> keyframe node of its last low-score widest search
 	std::map<size_t, TClosureTrack> m_tracks;  //!< submap -> the keyframe before's kept closure
 	std::list<std::pair<size_t, std::unique_ptr<TSubmapField>>> m_fieldCache;  //!< most recent first
 	std::unique_ptr<common::CTaskPool> m_pool;  //!< verifies a keyframe's candidates side by side
