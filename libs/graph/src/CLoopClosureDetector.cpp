@@ -188,7 +188,8 @@ std::vector<CLoopClosureDetector::TCandidate> CLoopClosureDetector::searched(
 		// whole submap less often than its local ones). A search that found
 		// the place but could not verify it (ambiguous, ICP) is repeated at
 		// once: that is how such a place gets closed a keyframe later.
-		else if (isWide(c.window.xy_m) && within(m_wideLowScoreAt, c.submap, node, m_options.retest_wide_after_keyframes))
+		else if (isWide(c.window.xy_m) &&
+				 within(m_wideLowScoreAt, c.submap, node, m_options.retest_wide_after_keyframes))
 			++m_skippedRecentWide;
 		else
 			out.push_back(c);
@@ -248,8 +249,11 @@ std::vector<TLoopClosure> CLoopClosureDetector::detect(size_t node, const CPoseG
 	int accepted = 0;
 	for (size_t k = 0; k < out.size(); ++k)
 	{
-		if (out[k].reason == "low score") m_lowScoreAt[out[k].submap] = node;
-		if (out[k].reason == "low score" && isWide(out[k].window_xy_m)) m_wideLowScoreAt[out[k].submap] = node;
+		if (out[k].reason == "low score")
+		{
+			m_lowScoreAt[out[k].submap] = node;
+			if (isWide(out[k].window_xy_m)) m_wideLowScoreAt[out[k].submap] = node;
+		}
 		accepted += out[k].accepted ? 1 : 0;
 		if (m_options.max_closures_per_keyframe > 0 && accepted >= m_options.max_closures_per_keyframe)
 		{
